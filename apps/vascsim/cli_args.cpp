@@ -1,0 +1,80 @@
+#include "apps/vascsim/cli_args.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace vascsim::cli {
+
+Args::Args(int argc, char** argv, int first, const std::vector<OptionSpec>& options) {
+  for (int i = first; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a.size() < 3 || a.compare(0, 2, "--") != 0) {
+      if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option '" + a + "'");
+      positional_.push_back(a);
+      continue;
+    }
+    std::string name = a.substr(2), inline_value;
+    const bool has_inline = name.find('=') != std::string::npos;
+    if (has_inline) {
+      inline_value = name.substr(name.find('=') + 1);
+      name = name.substr(0, name.find('='));
+    }
+    const OptionSpec* spec = nullptr;
+    for (const auto& o : options)
+      if (o.name == name) spec = &o;
+    if (!spec) throw UsageError("unknown option '--" + name + "'");
+    if (spec->value_name.empty()) {
+      if (has_inline) throw UsageError("option '--" + name + "' takes no value");
+      values_[name] = "";
+    } else if (has_inline) {
+      values_[name] = inline_value;
+    } else {
+      if (i + 1 >= argc) throw UsageError("option '--" + name + "' needs a value " + spec->value_name);
+      values_[name] = argv[++i];
+    }
+  }
+}
+
+std::optional<std::string> Args::value(const std::string& name) const {
+  auto it = values_.find(name);
+  if (it == values_.end()) return std::nullopt;
+  return it->second;
+}
+
+double Args::number(const std::string& name, double fallback, double min, double max) const {
+  auto v = value(name);
+  if (!v) return fallback;
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(v->c_str(), &end);
+  if (v->empty() || *end != '\0' || errno != 0 || !std::isfinite(x) || x < min || x > max)
+    throw UsageError("--" + name + ": expected a number in [" + std::to_string(min) + ", " + std::to_string(max) +
+                     "], got '" + *v + "'");
+  return x;
+}
+
+long long Args::integer(const std::string& name, long long fallback, long long min, long long max) const {
+  auto v = value(name);
+  if (!v) return fallback;
+  char* end = nullptr;
+  errno = 0;
+  const long long x = std::strtoll(v->c_str(), &end, 10);
+  if (v->empty() || *end != '\0' || errno != 0 || x < min || x > max)
+    throw UsageError("--" + name + ": expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+                     "], got '" + *v + "'");
+  return x;
+}
+
+std::string format_options(const std::vector<OptionSpec>& options) {
+  std::string out;
+  for (const auto& o : options) {
+    std::string left = "  --" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
+    if (left.size() < 26) left.resize(26, ' ');
+    else left += "\n" + std::string(26, ' ');
+    out += left + o.help + "\n";
+  }
+  return out;
+}
+
+}  // namespace vascsim::cli

@@ -1,0 +1,19 @@
+// The subcommand table. Each subcommand lives in its own command_<name>.cpp and parses its own
+// options with cli::Args; it throws UsageError or InputError for the user's mistakes.
+#pragma once
+
+#include <vector>
+
+namespace vascsim::cli {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(int argc, char** argv);  // argv[1] is the command name
+};
+
+const std::vector<Command>& commands();
+
+int run_maze_command(int argc, char** argv);
+
+}  // namespace vascsim::cli

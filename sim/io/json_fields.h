@@ -1,0 +1,57 @@
+// Internal to the io layer (includes nlohmann-json; never include it from sim/ or render/).
+// FieldReader walks one JSON object of a scene file and validates each field as it is read, so
+// every error names the file, the JSON pointer of the field and what was expected:
+//   scenes/x.json: /maze/rows: expected an integer in [1, 200], got 0
+// finish() then rejects any key that no one asked for (a typo must not be silently ignored).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "sim/env/geometry.h"
+
+namespace vascsim::io {
+
+class FieldReader {
+ public:
+  // `object` must outlive the reader. Throws InputError if it is not a JSON object.
+  FieldReader(const nlohmann::json& object, std::string file, std::string pointer);
+
+  bool has(const std::string& key) const;
+  // Optional fields: return `fallback` when absent, validate when present.
+  double number(const std::string& key, double fallback, double min, double max);
+  // As number(), but the bound is exclusive: (min, max].
+  double positive(const std::string& key, double fallback, double max = 1e300);
+  long long integer(const std::string& key, long long fallback, long long min, long long max);
+  bool boolean(const std::string& key, bool fallback);
+  std::string choice(const std::string& key, const std::string& fallback, const std::vector<std::string>& allowed);
+  std::string text(const std::string& key, const std::string& fallback);
+  Vec2 vec2(const std::string& key, const Vec2& fallback);
+  // A nested object: the returned reader is empty (every lookup falls back) when the key is absent.
+  FieldReader object(const std::string& key);
+  // The raw value of a field that the caller validates itself, marking it as known.
+  const nlohmann::json* raw(const std::string& key);
+  // Throws for the first key not read by any accessor above.
+  void finish() const;
+
+  std::string pointer_of(const std::string& key) const { return pointer_ + "/" + key; }
+  [[noreturn]] void fail(const std::string& key, const std::string& expected, const nlohmann::json& got) const;
+  const std::string& file() const { return file_; }
+
+ private:
+  const nlohmann::json* lookup(const std::string& key);
+
+  const nlohmann::json* object_;  // null for an absent optional object
+  std::string file_;
+  std::string pointer_;
+  std::set<std::string> known_;
+};
+
+// Short rendering of a JSON value for messages ("0", "\"abc\"", "an object", ...).
+std::string describe(const nlohmann::json& value);
+// Formats a bound as the user would write it (0.1, 200, 1e+06).
+std::string format_number(double value);
+
+}  // namespace vascsim::io

@@ -1,0 +1,87 @@
+#include "sim/io/log_metadata.h"
+
+#include <nlohmann/json.hpp>
+
+#include "sim/io/json_fields.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim {
+
+using nlohmann::json;
+
+namespace {
+
+json point(const Vec2& p) { return json::array({p.x(), p.y()}); }
+
+Polyline read_polyline(const json& array, const io::FieldReader& in, const std::string& key) {
+  if (!array.is_array()) in.fail(key, "an array of points", array);
+  Polyline out;
+  for (const auto& p : array) {
+    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+      in.fail(key, "an array of [x, y] points", p);
+    out.emplace_back(p[0].get<double>(), p[1].get<double>());
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string write_log_metadata(const LogMetadata& m) {
+  json j;
+  j["title"] = m.title;
+  j["scene"] = m.scene_json.empty() ? json(nullptr) : json::parse(m.scene_json);
+  j["bounds"] = {point(m.bounds.min), point(m.bounds.max)};
+  json walls = json::array();
+  for (const auto& w : m.walls) walls.push_back({w.a.x(), w.a.y(), w.b.x(), w.b.y(), w.thickness});
+  j["walls"] = walls;
+  j["lumen_width"] = m.lumen_width;
+  json path = json::array();
+  for (const auto& p : m.path) path.push_back(point(p));
+  j["path"] = path;
+  j["start"] = point(m.start);
+  j["goal"] = point(m.goal);
+  j["rod"] = {{"outer_radius", m.rod_outer_radius}, {"length", m.rod_length}};
+  j["output_interval"] = m.output_interval;
+  return j.dump();
+}
+
+LogMetadata read_log_metadata(const std::string& text, const std::string& label) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError(label + ": frame log metadata is not valid JSON (" + e.what() + ")");
+  }
+  LogMetadata m;
+  io::FieldReader in(j, label + " (metadata)", "");
+  m.title = in.text("title", "");
+  if (const json* scene = in.raw("scene"); scene && !scene->is_null()) m.scene_json = scene->dump(2);
+  if (const json* b = in.raw("bounds")) {
+    Polyline corners = read_polyline(*b, in, "bounds");
+    if (corners.size() != 2) in.fail("bounds", "two corners", *b);
+    m.bounds = {corners[0], corners[1]};
+  }
+  if (const json* walls = in.raw("walls")) {
+    if (!walls->is_array()) in.fail("walls", "an array", *walls);
+    for (const auto& w : *walls) {
+      if (!w.is_array() || w.size() != 5) in.fail("walls", "[x0, y0, x1, y1, thickness] items", w);
+      for (const auto& v : w)
+        if (!v.is_number()) in.fail("walls", "numbers", w);
+      m.walls.push_back({Vec2(w[0].get<double>(), w[1].get<double>()), Vec2(w[2].get<double>(), w[3].get<double>()),
+                         w[4].get<double>()});
+    }
+  }
+  m.lumen_width = in.number("lumen_width", 0.0, 0.0, 1e6);
+  if (const json* path = in.raw("path")) m.path = read_polyline(*path, in, "path");
+  m.start = in.vec2("start", m.start);
+  m.goal = in.vec2("goal", m.goal);
+  auto rod = in.object("rod");
+  m.rod_outer_radius = rod.number("outer_radius", 0.0, 0.0, 1e6);
+  m.rod_length = rod.number("length", 0.0, 0.0, 1e6);
+  rod.finish();
+  m.output_interval = in.number("output_interval", 0.0, 0.0, 1e9);
+  // Newer writers may add keys; an older reader ignores them rather than refusing the log.
+  return m;
+}
+
+}  // namespace vascsim

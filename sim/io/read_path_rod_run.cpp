@@ -1,0 +1,56 @@
+#include "sim/io/scene_sections.h"
+
+namespace vascsim::io {
+
+using nlohmann::json;
+
+void read_path(FieldReader& in, PathSpec& out) {
+  const std::string solver = in.choice("solver", out.solver == PathSolver::kWallFollower ? "wall_follower" : "bfs",
+                                       {"wall_follower", "bfs"});
+  out.solver = solver == "bfs" ? PathSolver::kBreadthFirst : PathSolver::kWallFollower;
+  out.corner_radius = in.number("corner_radius", out.corner_radius, 0.0, 1e3);
+  out.speed = in.positive("speed", out.speed, 1e3);
+  in.finish();
+}
+
+json write_path(const PathSpec& spec) {
+  return {{"solver", spec.solver == PathSolver::kBreadthFirst ? "bfs" : "wall_follower"},
+          {"corner_radius", spec.corner_radius},
+          {"speed", spec.speed}};
+}
+
+void read_rod(FieldReader& in, RodSpec& out) {
+  out.nodes = static_cast<int>(in.integer("nodes", out.nodes, 3, 1000000));
+  out.length = in.positive("length", out.length, 1e3);
+  out.outer_radius = in.positive("outer_radius", out.outer_radius, 1.0);
+  out.inner_radius = in.number("inner_radius", std::min(out.inner_radius, 0.5 * out.outer_radius), 0.0, 1.0);
+  if (out.inner_radius >= out.outer_radius)
+    in.fail("inner_radius", "a number in [0, outer_radius = " + format_number(out.outer_radius) + ")",
+            json(out.inner_radius));
+  out.youngs_modulus = in.positive("youngs_modulus", out.youngs_modulus, 1e13);
+  out.poisson_ratio = in.number("poisson_ratio", out.poisson_ratio, -1.0, 0.5);
+  out.density = in.positive("density", out.density, 1e5);
+  in.finish();
+}
+
+json write_rod(const RodSpec& spec) {
+  return {{"nodes", spec.nodes},
+          {"length", spec.length},
+          {"outer_radius", spec.outer_radius},
+          {"inner_radius", spec.inner_radius},
+          {"youngs_modulus", spec.youngs_modulus},
+          {"poisson_ratio", spec.poisson_ratio},
+          {"density", spec.density}};
+}
+
+void read_run(FieldReader& in, RunSpec& out) {
+  out.duration = in.positive("duration", out.duration, 1e7);
+  out.output_interval = in.positive("output_interval", out.output_interval, 1e7);
+  in.finish();
+}
+
+json write_run(const RunSpec& spec) {
+  return {{"duration", spec.duration}, {"output_interval", spec.output_interval}};
+}
+
+}  // namespace vascsim::io

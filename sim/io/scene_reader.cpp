@@ -1,0 +1,73 @@
+#include "sim/io/scene_reader.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "sim/io/scene_sections.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim {
+
+using nlohmann::json;
+
+Scene read_scene_text(const std::string& text, const std::string& label) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // nlohmann reports the byte offset; that is enough to find the mistake.
+    throw InputError(label + ": not valid JSON (" + std::string(e.what()) + ")");
+  }
+  Scene scene;
+  scene.file = label;
+  io::FieldReader in(root, label, "");
+  in.text("format", "vascsim-scene/1");  // reserved for future format versions
+  if (in.has("format") && root["format"] != "vascsim-scene/1")
+    in.fail("format", "\"vascsim-scene/1\"", root["format"]);
+  scene.name = in.text("name", scene.name);
+  in.text("description", "");
+  {
+    auto section = in.object("maze");
+    io::read_maze(section, scene.maze);
+  }
+  {
+    auto section = in.object("path");
+    io::read_path(section, scene.path);
+  }
+  {
+    auto section = in.object("rod");
+    io::read_rod(section, scene.rod);
+  }
+  {
+    auto section = in.object("run");
+    io::read_run(section, scene.run);
+  }
+  in.finish();
+  return scene;
+}
+
+Scene read_scene_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InputError(path + ": cannot open scene file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (file.bad()) throw InputError(path + ": cannot read scene file");
+  return read_scene_text(text.str(), path);
+}
+
+std::string scene_to_json(const Scene& scene) {
+  json root;
+  root["format"] = "vascsim-scene/1";
+  root["name"] = scene.name;
+  root["maze"] = io::write_maze(scene.maze);
+  root["path"] = io::write_path(scene.path);
+  root["rod"] = io::write_rod(scene.rod);
+  root["run"] = io::write_run(scene.run);
+  return root.dump(2);
+}
+
+namespace io {
+json to_json(const Vec2& p) { return json::array({p.x(), p.y()}); }
+}  // namespace io
+
+}  // namespace vascsim

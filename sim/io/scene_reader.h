@@ -1,0 +1,19 @@
+// Reads and validates scene files (JSON, documented in docs/scenes.md) into a Scene.
+// Every error is an InputError naming the file, the JSON pointer and what was expected.
+#pragma once
+
+#include <string>
+
+#include "sim/scene/scene.h"
+
+namespace vascsim {
+
+// Reads `path`. Throws InputError if the file is missing, not JSON, or any value is invalid.
+Scene read_scene_file(const std::string& path);
+// Parses scene JSON text; `label` names the source in messages.
+Scene read_scene_text(const std::string& text, const std::string& label);
+// The scene as canonical JSON text with every default filled in (stored in frame logs and
+// summaries so that a run can be reproduced from its outputs alone).
+std::string scene_to_json(const Scene& scene);
+
+}  // namespace vascsim

@@ -1,0 +1,25 @@
+// Internal to the io layer: one reader and one writer per top-level scene section, each in its
+// own file (read_<section>.cpp), so that a new part of the simulation adds a section without
+// touching the others.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "sim/io/json_fields.h"
+#include "sim/scene/scene.h"
+
+namespace vascsim::io {
+
+void read_maze(FieldReader& in, MazeSpec& out);
+void read_path(FieldReader& in, PathSpec& out);
+void read_rod(FieldReader& in, RodSpec& out);
+void read_run(FieldReader& in, RunSpec& out);
+
+nlohmann::json write_maze(const MazeSpec& spec);
+nlohmann::json write_path(const PathSpec& spec);
+nlohmann::json write_rod(const RodSpec& spec);
+nlohmann::json write_run(const RunSpec& spec);
+
+nlohmann::json to_json(const Vec2& p);
+
+}  // namespace vascsim::io

@@ -1,0 +1,197 @@
+#include "sim/log/frame_log.h"
+
+#include <cstring>
+#include <stdexcept>
+
+#include "sim/scene/input_error.h"
+
+namespace vascsim {
+namespace {
+
+constexpr char kMagic[8] = {'V', 'S', 'I', 'M', 'L', 'O', 'G', '\0'};
+
+// The format is little-endian; every machine we build for is too, so values are written raw.
+static_assert(sizeof(double) == 8, "frame log stores IEEE-754 binary64");
+
+void put_u8(std::string& out, std::uint8_t v) { out.push_back(static_cast<char>(v)); }
+void put_u32(std::string& out, std::uint32_t v) {
+  char b[4];
+  std::memcpy(b, &v, 4);
+  out.append(b, 4);
+}
+void put_string(std::string& out, const std::string& s) {
+  put_u32(out, static_cast<std::uint32_t>(s.size()));
+  out += s;
+}
+
+// Reads the header fields in order from a byte buffer, failing with a message on truncation.
+class ByteCursor {
+ public:
+  ByteCursor(const std::string& path, std::FILE* f) : path_(path), file_(f) {}
+  void bytes(void* out, std::size_t n) {
+    if (std::fread(out, 1, n, file_) != n)
+      throw InputError(path_ + ": truncated frame log header");
+    consumed_ += n;
+  }
+  std::uint8_t u8() { std::uint8_t v; bytes(&v, 1); return v; }
+  std::uint32_t u32() { std::uint32_t v; bytes(&v, 4); return v; }
+  std::string string(std::uint32_t max_len) {
+    std::uint32_t n = u32();
+    if (n > max_len) throw InputError(path_ + ": corrupt frame log header (string of " + std::to_string(n) + " bytes)");
+    std::string s(n, '\0');
+    if (n) bytes(s.data(), n);
+    return s;
+  }
+  std::uint64_t consumed() const { return consumed_; }
+
+ private:
+  const std::string& path_;
+  std::FILE* file_;
+  std::uint64_t consumed_ = 0;
+};
+
+}  // namespace
+
+int FrameLogHeader::find_channel(const std::string& name) const {
+  for (std::size_t i = 0; i < channels.size(); ++i)
+    if (channels[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+std::size_t FrameLogHeader::record_doubles() const {
+  std::size_t n = 1;
+  for (const auto& c : channels) n += c.count;
+  return n;
+}
+
+std::size_t FrameLogHeader::channel_offset(int index) const {
+  std::size_t offset = 1;
+  for (int i = 0; i < index; ++i) offset += channels[static_cast<std::size_t>(i)].count;
+  return offset;
+}
+
+FrameLogWriter::FrameLogWriter(const std::string& path, const FrameLogHeader& header)
+    : path_(path), header_(header) {
+  for (const auto& c : header_.channels) {
+    if (c.layout == ChannelLayout::kNodeVectors && c.count != 2 * header_.node_count)
+      throw std::invalid_argument("frame log channel " + c.name + ": node vectors need 2*node_count values");
+    if (c.layout == ChannelLayout::kVector && c.count != 2)
+      throw std::invalid_argument("frame log channel " + c.name + ": a vector has 2 values");
+  }
+  file_ = std::fopen(path.c_str(), "wb");
+  if (!file_) throw InputError(path + ": cannot create frame log (" + std::strerror(errno) + ")");
+
+  std::string bytes(kMagic, sizeof kMagic);
+  put_u32(bytes, kFrameLogVersion);
+  put_u32(bytes, header_.node_count);
+  put_u32(bytes, static_cast<std::uint32_t>(header_.channels.size()));
+  for (const auto& c : header_.channels) {
+    put_string(bytes, c.name);
+    put_string(bytes, c.unit);
+    put_u8(bytes, static_cast<std::uint8_t>(c.layout));
+    put_u32(bytes, c.count);
+  }
+  put_string(bytes, header_.metadata);
+  // Records start 8-byte aligned so a reader may map the file and view them as doubles.
+  while (bytes.size() % 8 != 0) bytes.push_back('\0');
+  if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size() || std::fflush(file_) != 0)
+    throw InputError(path_ + ": cannot write frame log header (" + std::strerror(errno) + ")");
+  record_.resize(header_.record_doubles());
+}
+
+FrameLogWriter::~FrameLogWriter() {
+  if (file_) std::fclose(file_);
+}
+
+void FrameLogWriter::append(double time, const std::vector<double>& values) {
+  if (values.size() + 1 != record_.size())
+    throw std::invalid_argument("frame log append: expected " + std::to_string(record_.size() - 1) +
+                                " values, got " + std::to_string(values.size()));
+  if (!file_) throw std::logic_error("frame log append after close");
+  record_[0] = time;
+  std::copy(values.begin(), values.end(), record_.begin() + 1);
+  const std::size_t n = record_.size() * sizeof(double);
+  // Flushing each record means a killed run keeps every frame it completed.
+  if (std::fwrite(record_.data(), 1, n, file_) != n || std::fflush(file_) != 0)
+    throw InputError(path_ + ": cannot write frame " + std::to_string(frames_written_) + " (" +
+                     std::strerror(errno) + ")");
+  ++frames_written_;
+}
+
+void FrameLogWriter::close() {
+  if (!file_) return;
+  const bool ok = std::fclose(file_) == 0;
+  file_ = nullptr;
+  if (!ok) throw InputError(path_ + ": cannot close frame log (" + std::strerror(errno) + ")");
+}
+
+FrameLogReader::FrameLogReader(const std::string& path) : path_(path) {
+  file_ = std::fopen(path.c_str(), "rb");
+  if (!file_) throw InputError(path + ": cannot open frame log (" + std::strerror(errno) + ")");
+  ByteCursor in(path_, file_);
+  char magic[8];
+  in.bytes(magic, 8);
+  if (std::memcmp(magic, kMagic, 8) != 0) throw InputError(path + ": not a vascsim frame log");
+  const std::uint32_t version = in.u32();
+  if (version != kFrameLogVersion)
+    throw InputError(path + ": frame log version " + std::to_string(version) + ", this build reads version " +
+                     std::to_string(kFrameLogVersion));
+  header_.node_count = in.u32();
+  const std::uint32_t channel_count = in.u32();
+  if (channel_count > 4096) throw InputError(path + ": corrupt frame log header (channel count)");
+  for (std::uint32_t i = 0; i < channel_count; ++i) {
+    LogChannel c;
+    c.name = in.string(1024);
+    c.unit = in.string(1024);
+    const std::uint8_t layout = in.u8();
+    if (layout > 2) throw InputError(path + ": corrupt frame log header (channel layout)");
+    c.layout = static_cast<ChannelLayout>(layout);
+    c.count = in.u32();
+    header_.channels.push_back(c);
+  }
+  header_.metadata = in.string(1u << 30);
+  data_offset_ = (in.consumed() + 7) / 8 * 8;
+}
+
+FrameLogReader::~FrameLogReader() {
+  if (file_) std::fclose(file_);
+}
+
+std::size_t FrameLogReader::frame_count() const {
+  if (std::fseek(file_, 0, SEEK_END) != 0) return 0;
+  const long end = std::ftell(file_);
+  if (end < 0 || static_cast<std::uint64_t>(end) < data_offset_) return 0;
+  const std::uint64_t record_bytes = header_.record_doubles() * sizeof(double);
+  return static_cast<std::size_t>((static_cast<std::uint64_t>(end) - data_offset_) / record_bytes);
+}
+
+void FrameLogReader::read(std::size_t i, std::vector<double>& record) const {
+  const std::size_t n = header_.record_doubles();
+  record.resize(n);
+  const std::uint64_t offset = data_offset_ + static_cast<std::uint64_t>(i) * n * sizeof(double);
+  if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0 ||
+      std::fread(record.data(), sizeof(double), n, file_) != n)
+    throw InputError(path_ + ": cannot read frame " + std::to_string(i) + " (log has " +
+                     std::to_string(frame_count()) + " complete frames)");
+}
+
+double FrameLogReader::time_of(std::size_t i) const {
+  const std::uint64_t offset = data_offset_ + static_cast<std::uint64_t>(i) * header_.record_doubles() * sizeof(double);
+  double t = 0.0;
+  if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0 || std::fread(&t, sizeof t, 1, file_) != 1)
+    throw InputError(path_ + ": cannot read the time of frame " + std::to_string(i));
+  return t;
+}
+
+std::size_t FrameLogReader::frame_at_time(double t) const {
+  std::size_t lo = 0, hi = frame_count();
+  if (hi == 0) throw InputError(path_ + ": frame log has no frames");
+  // Invariant: answer in [lo, hi); times are non-decreasing.
+  while (hi - lo > 1) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (time_of(mid) <= t) lo = mid; else hi = mid;
+  }
+  return lo;
+}
+
+}  // namespace vascsim
