@@ -15,5 +15,6 @@ struct Command {
 const std::vector<Command>& commands();
 
 int run_maze_command(int argc, char** argv);
+int run_bench_command(int argc, char** argv);
 
 }  // namespace vascsim::cli

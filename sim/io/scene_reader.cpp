@@ -26,7 +26,9 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
     in.fail("format", "\"vascsim-scene/1\"", root["format"]);
   scene.name = in.text("name", scene.name);
   in.text("description", "");
-  {
+  if (const json* maze = in.raw("maze"); maze && maze->is_null()) {
+    scene.has_maze = false;
+  } else {
     auto section = in.object("maze");
     io::read_maze(section, scene.maze);
   }
@@ -59,7 +61,7 @@ std::string scene_to_json(const Scene& scene) {
   json root;
   root["format"] = "vascsim-scene/1";
   root["name"] = scene.name;
-  root["maze"] = io::write_maze(scene.maze);
+  root["maze"] = scene.has_maze ? io::write_maze(scene.maze) : json(nullptr);
   root["path"] = io::write_path(scene.path);
   root["rod"] = io::write_rod(scene.rod);
   root["run"] = io::write_run(scene.run);

@@ -58,6 +58,7 @@ struct RunSpec {
 struct Scene {
   std::string file;  // where it was read from, for messages; empty for built-in scenes
   std::string name = "scene";
+  bool has_maze = true;  // false for scenes in free space ("maze": null), e.g. validation problems
   MazeSpec maze;
   PathSpec path;
   RodSpec rod;

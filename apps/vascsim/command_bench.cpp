@@ -1,0 +1,37 @@
+#include <cstdio>
+#include <cstring>
+
+#include "apps/vascsim/cli_args.h"
+#include "apps/vascsim/commands.h"
+
+namespace vascsim::cli {
+
+namespace {
+
+// One entry per benchmark; each lives in bench_<name>.cpp. argv[2] is the benchmark name.
+struct Benchmark {
+  const char* name;
+  const char* summary;
+  int (*run)(int argc, char** argv);
+};
+
+const std::vector<Benchmark>& benchmarks() {
+  static const std::vector<Benchmark> table = {
+  };
+  return table;
+}
+
+}  // namespace
+
+int run_bench_command(int argc, char** argv) {
+  if (argc < 3 || !std::strcmp(argv[2], "--help")) {
+    std::printf("usage: vascsim bench <benchmark> [options]   (vascsim bench <benchmark> --help)\n\nbenchmarks:\n");
+    for (const auto& b : benchmarks()) std::printf("  %-10s %s\n", b.name, b.summary);
+    return argc < 3 ? 2 : 0;
+  }
+  for (const auto& b : benchmarks())
+    if (!std::strcmp(b.name, argv[2])) return b.run(argc, argv);
+  throw UsageError(std::string("unknown benchmark '") + argv[2] + "'");
+}
+
+}  // namespace vascsim::cli
