@@ -1,15 +1,74 @@
-#include "apps/vascsim/commands.h"
-
 #include <cstdio>
 
 #include "apps/vascsim/cli_args.h"
+#include "apps/vascsim/commands.h"
+#include "sim/io/maze_json.h"
+#include "sim/io/output_file.h"
+#include "sim/io/scene_reader.h"
 
 namespace vascsim::cli {
 
+namespace {
+
+const std::vector<OptionSpec> kOptions = {
+    {"scene", "FILE", "read the maze and path settings from a scene file (default: built-in defaults)"},
+    {"seed", "S", "maze generator seed (overrides the scene)"},
+    {"rows", "R", "maze rows, 1..200 (overrides the scene)"},
+    {"cols", "C", "maze columns, 1..200 (overrides the scene)"},
+    {"lumen-width", "W", "channel width in m (overrides the scene)"},
+    {"solver", "NAME", "wall_follower or bfs (overrides the scene)"},
+    {"corner-radius", "R", "path corner rounding radius in m (overrides the scene)"},
+    {"speed", "V", "tip reference speed in m/s, for the trajectory duration (overrides the scene)"},
+    {"out", "FILE", "where to write the maze JSON (required)"},
+    {"force", "", "overwrite FILE if it exists"},
+    {"help", "", "show this help"},
+};
+
+void print_usage() {
+  std::printf(
+      "usage: vascsim maze [--scene FILE] [--seed S --rows R --cols C ...] --out FILE [--force]\n\n"
+      "Generates a random perfect maze (or reads explicit walls from the scene), solves it from start\n"
+      "(top-right) to goal (bottom-left) and writes walls, cell path and reference centreline as JSON\n"
+      "(format in docs/scenes.md).\n\noptions:\n%s",
+      format_options(kOptions).c_str());
+}
+
+}  // namespace
+
 int run_maze_command(int argc, char** argv) {
-  (void)argc; (void)argv;
-  std::fprintf(stderr, "not yet\n");
-  return 1;
+  Args args(argc, argv, 2, kOptions);
+  if (args.flag("help")) {
+    print_usage();
+    return 0;
+  }
+  if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional().front() + "'");
+  const auto out = args.value("out");
+  if (!out) throw UsageError("--out FILE is required");
+
+  Scene scene = args.value("scene") ? read_scene_file(*args.value("scene")) : Scene{};
+  if (!scene.has_maze) throw UsageError("scene " + scene.file + " has no maze (\"maze\": null)");
+  MazeSpec& maze = scene.maze;
+  const bool generator_option = args.value("seed") || args.value("rows") || args.value("cols") || args.value("lumen-width");
+  if (maze.explicit_walls && generator_option)
+    throw UsageError("--seed, --rows, --cols and --lumen-width apply to generated mazes; scene " + scene.file +
+                     " lists explicit walls");
+  maze.seed = static_cast<std::uint64_t>(args.integer("seed", static_cast<long long>(maze.seed), 0, 9007199254740991LL));
+  maze.rows = static_cast<int>(args.integer("rows", maze.rows, 1, 200));
+  maze.cols = static_cast<int>(args.integer("cols", maze.cols, 1, 200));
+  const double pitch = std::min(maze.width / maze.cols, maze.height / maze.rows);
+  maze.lumen_width = std::min(maze.lumen_width, pitch);  // a finer grid narrows the default lumen to fit
+  maze.lumen_width = args.number("lumen-width", maze.lumen_width, 1e-6, pitch);
+  if (auto s = args.value("solver")) {
+    if (*s != "wall_follower" && *s != "bfs") throw UsageError("--solver: expected wall_follower or bfs, got '" + *s + "'");
+    scene.path.solver = *s == "bfs" ? PathSolver::kBreadthFirst : PathSolver::kWallFollower;
+  }
+  scene.path.corner_radius = args.number("corner-radius", scene.path.corner_radius, 0.0, 1e3);
+  scene.path.speed = args.number("speed", scene.path.speed, 1e-9, 1e3);
+
+  check_output_path(*out, args.flag("force"));
+  write_file_atomically(*out, maze_document(scene));
+  std::printf("wrote %s (%d x %d maze)\n", out->c_str(), maze.rows, maze.cols);
+  return 0;
 }
 
 }  // namespace vascsim::cli

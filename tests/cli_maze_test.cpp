@@ -1,0 +1,70 @@
+// `vascsim maze` as a user drives it: help, usage errors, no silent overwrite, determinism.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "tests/cli_test_support.h"
+
+namespace vascsim::test {
+namespace {
+
+TEST(CliMaze, HelpListsEveryOption) {
+  const CommandResult r = run_vascsim("maze --help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* option : {"--scene", "--seed", "--rows", "--cols", "--lumen-width", "--solver", "--corner-radius",
+                             "--speed", "--out", "--force"})
+    EXPECT_NE(r.output.find(option), std::string::npos) << option << " missing from:\n" << r.output;
+  const CommandResult top = run_vascsim("--help");
+  EXPECT_EQ(top.exit_code, 0);
+  EXPECT_NE(top.output.find("maze"), std::string::npos);
+}
+
+TEST(CliMaze, UsageErrorsExitTwo) {
+  const std::string dir = fresh_temp_dir("usage");
+  struct Case { std::string args, message; };
+  const Case cases[] = {
+      {"maze --bogus --out " + dir + "/m.json", "unknown option '--bogus'"},
+      {"maze --rows 0 --out " + dir + "/m.json", "--rows: expected an integer in [1, 200], got '0'"},
+      {"maze --rows", "option '--rows' needs a value R"},
+      {"maze", "--out FILE is required"},
+      {"maze --solver dfs --out " + dir + "/m.json", "--solver: expected wall_follower or bfs, got 'dfs'"},
+      {"frobnicate", "unknown command 'frobnicate'"},
+      {"maze --out /nonexistent-dir/m.json", "/nonexistent-dir/m.json: directory /nonexistent-dir does not exist"},
+  };
+  for (const auto& c : cases) {
+    const CommandResult r = run_vascsim(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << "\nexpected: " << c.message << "\ngot: " << r.output;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliMaze, DoesNotOverwriteWithoutForce) {
+  const std::string dir = fresh_temp_dir("overwrite");
+  const std::string out = dir + "/m.json";
+  write_text(out, "precious");
+  CommandResult r = run_vascsim("maze --out " + out);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find(out + ": already exists (pass --force to overwrite it)"), std::string::npos) << r.output;
+  EXPECT_EQ(read_text(out), "precious");
+  r = run_vascsim("maze --out " + out + " --force");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(read_text(out), "precious");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliMaze, SameSeedSameBytesDifferentSeedDifferentMaze) {
+  const std::string dir = fresh_temp_dir("determinism");
+  ASSERT_EQ(run_vascsim("maze --seed 7 --rows 9 --cols 11 --out " + dir + "/a.json").exit_code, 0);
+  ASSERT_EQ(run_vascsim("maze --seed 7 --rows 9 --cols 11 --out " + dir + "/b.json").exit_code, 0);
+  ASSERT_EQ(run_vascsim("maze --seed 8 --rows 9 --cols 11 --out " + dir + "/c.json").exit_code, 0);
+  const std::string a = read_text(dir + "/a.json");
+  EXPECT_GT(a.size(), 1000u);
+  EXPECT_EQ(a, read_text(dir + "/b.json"));
+  EXPECT_NE(a, read_text(dir + "/c.json"));
+  EXPECT_NE(a.find("\"format\": \"vascsim-maze/1\""), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace vascsim::test

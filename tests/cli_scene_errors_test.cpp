@@ -1,0 +1,84 @@
+// Every documented scene error (docs/scenes.md, "Errors") through the executable: the message
+// names the file, the JSON pointer and what was expected; the exit code is 2; nothing is written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "tests/cli_test_support.h"
+
+namespace vascsim::test {
+namespace {
+
+struct BadScene {
+  const char* name;
+  const char* text;
+  const char* message;  // expected after "FILE: "
+};
+
+const BadScene kBadScenes[] = {
+    {"rows_zero", R"({"maze": {"rows": 0}})", "/maze/rows: expected an integer in [1, 200], got 0"},
+    {"rows_float", R"({"maze": {"rows": 2.5}})", "/maze/rows: expected an integer in [1, 200], got 2.5"},
+    {"cols_string", R"({"maze": {"cols": "five"}})", "/maze/cols: expected an integer in [1, 200], got \"five\""},
+    {"unknown_top", R"({"mazes": {}})", "/mazes: unknown key"},
+    {"unknown_nested", R"({"rod": {"nodes": 10, "lenght": 0.5}})", "/rod/lenght: unknown key"},
+    {"lumen_too_wide", R"({"maze": {"lumen_width": 0.3}})", "/maze/lumen_width: expected a number in [1e-06, 0.2], got 0.3"},
+    {"negative_width", R"({"maze": {"width": -1}})", "/maze/width: expected a number in (0, 1000], got -1"},
+    {"rod_nodes", R"({"rod": {"nodes": 1}})", "/rod/nodes: expected an integer in [3, 1000000], got 1"},
+    {"inner_radius", R"({"rod": {"outer_radius": 0.002, "inner_radius": 0.002}})",
+     "/rod/inner_radius: expected a number in [0, outer_radius = 0.002), got 0.002"},
+    {"poisson", R"({"rod": {"poisson_ratio": 0.7}})", "/rod/poisson_ratio: expected a number in [-1, 0.5], got 0.7"},
+    {"solver_name", R"({"path": {"solver": "dfs"}})", "/path/solver: expected one of \"wall_follower\", \"bfs\", got \"dfs\""},
+    {"maze_not_object", R"({"maze": 5})", "/maze: expected an object, got 5"},
+    {"walls_and_rows", R"({"maze": {"rows": 3, "walls": [{"from": [0, 0], "to": [1, 0]}]}})",
+     "/maze/rows: expected no generator settings beside an explicit \"walls\" list, got 3"},
+    {"wall_point", R"({"maze": {"walls": [{"from": [0, 0], "to": [1]}]}})",
+     "/maze/walls/0/to: expected an array of 2 finite numbers [x, y], got an array of 1"},
+    {"wall_missing_to", R"({"maze": {"walls": [{"from": [0, 0]}]}})", "/maze/walls/0/to: expected a point [x, y], got null"},
+    {"start_outside", R"({"maze": {"walls": [{"from": [0, 0], "to": [1, 0]}], "start": [2, 0.5]}})",
+     "/maze/start: expected a point inside the maze bounds, got [2.0,0.5]"},
+    {"format", R"({"format": "vascsim-scene/9"})", "/format: expected \"vascsim-scene/1\", got \"vascsim-scene/9\""},
+    {"not_object", R"([1, 2])", "/: expected an object, got an array of 2"},
+};
+
+class SceneErrors : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(SceneErrors, NameFilePointerAndExpectationAndExitTwo) {
+  const BadScene& bad = GetParam();
+  const std::string dir = fresh_temp_dir(std::string("scene_") + bad.name);
+  const std::string scene = dir + "/bad.json";
+  const std::string out = dir + "/maze.json";
+  write_text(scene, bad.text);
+  const CommandResult r = run_vascsim("maze --scene " + scene + " --out " + out);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(scene + ": " + bad.message), std::string::npos)
+      << "expected: " << scene << ": " << bad.message << "\ngot: " << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out)) << "an output was written despite the error";
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Documented, SceneErrors, ::testing::ValuesIn(kBadScenes),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(SceneFiles, MissingFileAndInvalidJson) {
+  const std::string dir = fresh_temp_dir("scene_files");
+  CommandResult r = run_vascsim("maze --scene " + dir + "/absent.json --out " + dir + "/m.json");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find(dir + "/absent.json: cannot open scene file"), std::string::npos) << r.output;
+  write_text(dir + "/broken.json", "{\"maze\": {\"rows\": 5,");
+  r = run_vascsim("maze --scene " + dir + "/broken.json --out " + dir + "/m.json");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find(dir + "/broken.json: not valid JSON"), std::string::npos) << r.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(SceneFiles, ShippedScenesAreValid) {
+  for (const char* name : {"scenes/maze_default.json", "scenes/paper_maze.json"}) {
+    const std::string dir = fresh_temp_dir("shipped");
+    const CommandResult r = run_vascsim("maze --scene " + source_path(name) + " --out " + dir + "/m.json");
+    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.output;
+    std::filesystem::remove_all(dir);
+  }
+}
+
+}  // namespace
+}  // namespace vascsim::test

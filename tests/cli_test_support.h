@@ -1,0 +1,23 @@
+// Runs the vascsim executable from tests and captures its exit code and output, so that the
+// command line (not only the library) is what the tests check.
+#pragma once
+
+#include <string>
+
+namespace vascsim::test {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr interleaved
+};
+
+// Runs `VASCSIM_EXE <arguments>` through the shell (arguments are passed verbatim).
+CommandResult run_vascsim(const std::string& arguments);
+// A fresh, empty temporary directory unique to this test process and `name`.
+std::string fresh_temp_dir(const std::string& name);
+// Writes `text` to `path`.
+void write_text(const std::string& path, const std::string& text);
+std::string read_text(const std::string& path);
+std::string source_path(const std::string& relative);  // path inside the repository
+
+}  // namespace vascsim::test
