@@ -67,7 +67,11 @@ int run_maze_command(int argc, char** argv) {
 
   check_output_path(*out, args.flag("force"));
   write_file_atomically(*out, maze_document(scene));
-  std::printf("wrote %s (%d x %d maze)\n", out->c_str(), maze.rows, maze.cols);
+  if (maze.explicit_walls)
+    std::printf("wrote %s (%zu explicit walls)\n", out->c_str(), maze.walls.size());
+  else
+    std::printf("wrote %s (%d x %d maze, seed %llu)\n", out->c_str(), maze.rows, maze.cols,
+                static_cast<unsigned long long>(maze.seed));
   return 0;
 }
 

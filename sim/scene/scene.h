@@ -49,6 +49,148 @@ struct RodSpec {
   double density = 980.0;         // kg/m^3
 };
 
+// Initial and rest shape of the rod (sim/rod/rod_model.cpp places the nodes). The rod starts at
+// `start` (the root; the clamp centre with a centred clamp) heading along `direction`, and is an
+// arc of `initial_curvature` (0: straight; large values coil it or fold it back on itself).
+struct ShapeSpec {
+  Vec2 start = Vec2(0.0, 0.0);     // m, root of the rod
+  double direction = 0.0;          // rad, heading of the first edge, from +x counter-clockwise
+  double initial_curvature = 0.0;  // 1/m, positive turns left
+  double rest_curvature = 0.0;     // 1/m, natural curvature of the unloaded rod
+};
+
+// Kinematic boundary conditions. Node indices count from 0 at the root; negative ones from the
+// tip (-1 is the tip node).
+enum class ClampKind {
+  kNone,
+  kFirstEdge,  // nodes 0 and 1 fixed, node 0 at the root (first-order accurate, refs section 0)
+  kCentred,    // nodes 0 and 1 fixed at -dl/2 and +dl/2 about the root; edge dl = L/(N-1.5)
+};
+// x(t) = x(0) + velocity t + amplitude sin(2 pi frequency t): a node driven kinematically.
+struct PrescribedMotionSpec {
+  int node = -1;
+  Vec2 velocity = Vec2::Zero();   // m/s
+  Vec2 amplitude = Vec2::Zero();  // m
+  double frequency = 0.0;         // Hz
+};
+struct BoundarySpec {
+  ClampKind clamp = ClampKind::kNone;
+  std::vector<int> pinned;  // nodes held at their initial position (free to rotate)
+  std::vector<PrescribedMotionSpec> prescribed;
+};
+
+// Loads. Each kind is a force module that exists in the Model only when switched on.
+enum class LoadProfile {
+  kConstant,
+  kRamp,  // value * min(1, t / ramp_time)
+  kSine,  // value * sin(2 pi frequency t + phase)
+};
+// A dead force on a node and/or a dead moment on the edge ending at the node (edge 0 for node 0).
+struct PointLoadSpec {
+  int node = -1;
+  Vec2 force = Vec2::Zero();  // N
+  double moment = 0.0;        // N m, counter-clockwise
+  LoadProfile profile = LoadProfile::kConstant;
+  double ramp_time = 1.0;     // s
+  double frequency = 1.0;     // Hz
+  double phase = 0.0;         // rad
+};
+struct GravitySpec {
+  bool enabled = false;  // off: the maze lies in the horizontal plane
+  Vec2 acceleration = Vec2(0.0, -9.81);  // m/s^2
+};
+// f_i = -coefficient * dl_i * v_i (dl_i the node's Voronoi length).
+struct DampingSpec {
+  bool enabled = false;
+  double coefficient = 0.0;  // N s/m^2, per metre of rod
+};
+enum class DragArea {
+  kNodes,        // every node, broadside projected area 2 r_o dl_i
+  kTipFrontal,   // the tip node only, frontal area pi r_o^2 (the paper)
+};
+// Quadratic fluid drag f = -1/2 rho |v| v A Cd (paper II.C), with its Jacobian in Newton.
+struct DragSpec {
+  bool enabled = false;
+  double fluid_density = 1025.0;    // kg/m^3, blood
+  double drag_coefficient = 1.0536; // -, paper
+  DragArea area = DragArea::kNodes;
+};
+struct LoadSpec {
+  GravitySpec gravity;
+  DampingSpec damping;
+  DragSpec drag;
+  std::vector<PointLoadSpec> point_loads;
+};
+
+// Time integration and Newton settings. A preset fills scheme, dt and tolerance (docs/accuracy.md
+// measured the trade); fields given in the scene override the preset.
+enum class Scheme { kBackwardEuler, kBdf2 };
+enum class SolveMode { kDynamic, kStatic };
+struct SolverSpec {
+  SolveMode mode = SolveMode::kDynamic;  // static: load-stepped equilibrium under the loads at t = 0
+  std::string preset = "balanced";       // "fast", "balanced", "accurate"
+  Scheme scheme = Scheme::kBdf2;
+  double dt = 1e-3;                      // s, target step
+  double rel_tol = 1e-6;                 // Newton: |residual|_inf <= rel_tol * force scale
+  double abs_tol = 0.0;                  // N, Newton: or |residual|_inf <= abs_tol (0: off)
+  double step_tol = 1e-12;               // Newton: or |dx|_inf <= step_tol * rod length (round-off)
+  int max_iterations = 25;
+  bool adaptive = true;                  // on failure retry with dt/2, down to dt / 2^max_halvings
+  int max_halvings = 10;
+  int load_steps = 10;                   // static mode: initial number of load increments
+};
+// The named presets (docs/accuracy.md); returns false for an unknown name.
+inline bool apply_solver_preset(const std::string& name, SolverSpec& s) {
+  if (name == "fast") { s.scheme = Scheme::kBackwardEuler; s.dt = 2e-3; s.rel_tol = 1e-4; }
+  else if (name == "balanced") { s.scheme = Scheme::kBdf2; s.dt = 1e-3; s.rel_tol = 1e-6; }
+  else if (name == "accurate") { s.scheme = Scheme::kBdf2; s.dt = 2.5e-4; s.rel_tol = 1e-9; }
+  else return false;
+  s.preset = name;
+  return true;
+}
+
+// Tip actuation and trajectory following (paper II.C, III.A-B, Algorithm 1). The tip is the last
+// rod node; the controller acts only in scenes with a maze.
+enum class ActuationMode {
+  kForce,      // default: magnetic force = feedforward + PD on the tip node(s); the tip moves by dynamics
+  kKinematic,  // the paper: the controller's output position is imposed on the tip node
+  kField,      // a tip magnet in a uniform field: the field turns the tip (torque m x B), its gradient pulls
+};
+enum class DisturbanceKind { kForce, kPosition };
+// d(t) = amplitude sin(omega t) along `direction` (paper: "2 sin(5 t)"; see docs/control.md).
+struct DisturbanceSpec {
+  DisturbanceKind kind = DisturbanceKind::kForce;
+  double amplitude = 2e-3;                         // N (force) or m (position); 0 switches it off
+  double omega = 5.0;                              // rad/s
+  Vec2 direction = Vec2(0.7071067811865476, 0.7071067811865476);  // unit vector
+};
+struct ControlSpec {
+  ActuationMode mode = ActuationMode::kForce;
+  double kp = 4.0;               // force mode: N/m; kinematic mode: - (fraction of the error corrected)
+  double kd = 0.4;               // force mode: N s/m; kinematic mode: s
+  int actuated_nodes = 1;        // force spread over this many nodes from the tip (the magnet's length)
+  double magnet_moment = 0.05;   // A m^2, field mode: tip dipole along the tip tangent
+  double field_strength = 0.02;  // T, field mode: |B|
+  double lead_time = 0.0;        // s, the reference starts this long after the run starts
+  DisturbanceSpec disturbance;
+};
+
+// Wall contact on every node and edge, at the rod's outer radius (paper II.D, V.B).
+enum class ContactMode {
+  kNone,
+  kImplicit,  // default: IPC barrier inside Newton (sim/contact/barrier.h); never penetrates
+  kPaper,     // the paper's iterative penalty: push nodes out by K_f times their depth until none is inside
+};
+struct ContactSpec {
+  ContactMode mode = ContactMode::kImplicit;
+  double activation_distance = 0.0;  // m, barrier g_hat; 0: a quarter of the outer radius
+  double stiffness = 0.0;            // N, barrier kappa; 0: from the rod's bending stiffness (docs/contact.md)
+  double friction = 0.0;             // -, Coulomb coefficient mu (0: frictionless)
+  double slip_velocity = 1e-4;       // m/s, friction regularisation: below it friction grows linearly
+  double paper_gain = 50.0;          // N/m, K_f of the paper's penalty, per iteration
+  int paper_iterations = 50;         // cap on the paper's push-out iterations per step
+};
+
 // Output of a run.
 struct RunSpec {
   double duration = 10.0;         // s, simulated time
@@ -63,6 +205,12 @@ struct Scene {
   PathSpec path;
   RodSpec rod;
   RunSpec run;
+  ControlSpec control;
+  ContactSpec contact;
+  ShapeSpec shape;
+  BoundarySpec boundary;
+  LoadSpec loads;
+  SolverSpec solver;
 };
 
 }  // namespace vascsim

@@ -1,0 +1,126 @@
+#include "sim/contact/contact_pairs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vascsim {
+
+namespace {
+
+std::vector<WallSegment> wall_corners(const std::vector<WallSegment>& walls) {
+  std::vector<WallSegment> corners;
+  auto add = [&](const Vec2& p, double thickness) {
+    for (const auto& c : corners)
+      if (c.a == p && c.thickness == thickness) return;
+    corners.push_back({p, p, thickness});
+  };
+  for (const auto& w : walls) {
+    add(w.a, w.thickness);
+    add(w.b, w.thickness);
+  }
+  return corners;
+}
+
+}  // namespace
+
+ContactGeometry::ContactGeometry(const std::vector<WallSegment>& walls, double rod_radius, double reach,
+                                 double max_edge_length)
+    : walls_(walls),
+      corners_(wall_corners(walls)),
+      rod_radius_(rod_radius),
+      reach_(reach),
+      max_edge_length_(max_edge_length),
+      // Queries reach a little beyond the barrier so max_step_fraction can see walls ahead.
+      wall_field_(walls, 4.0 * (rod_radius + reach) + max_edge_length),
+      corner_field_(corners_, 4.0 * (rod_radius + reach) + max_edge_length) {}
+
+void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
+                                    const std::function<void(const ContactPair&)>& visit) const {
+  const int nodes = static_cast<int>(x.size() / 2);
+  std::vector<WallHit> hits;
+  ContactPair pair;
+  for (int i = 0; i < nodes; ++i) {
+    const Vec2 p = x.segment<2>(2 * i);
+    wall_field_.near(p, rod_radius_ + reach_, hits);
+    for (const auto& h : hits) {
+      const WallSegment& w = walls_[static_cast<std::size_t>(h.wall)];
+      pair.first_dof = 2 * i;
+      pair.is_edge = false;
+      pair.geometry = point_segment_distance(p, w.a, w.b, with_hessian);
+      pair.gap = pair.geometry.distance - 0.5 * w.thickness - rod_radius_;
+      pair.normal = pair.geometry.gradient.head<2>();
+      if (pair.gap < reach_) visit(pair);
+    }
+  }
+  for (int i = 0; i + 1 < nodes; ++i) {
+    const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
+    const double half = 0.5 * (b - a).norm();
+    const double radius = std::min(half + rod_radius_ + reach_, corner_field_.max_query_radius());
+    corner_field_.near(0.5 * (a + b), radius, hits);
+    for (const auto& h : hits) {
+      const WallSegment& c = corners_[static_cast<std::size_t>(h.wall)];
+      pair.first_dof = 2 * i;
+      pair.is_edge = true;
+      pair.geometry = point_segment_distance(c.a, a, b, with_hessian);
+      pair.gap = pair.geometry.distance - 0.5 * c.thickness - rod_radius_;
+      pair.normal = -pair.geometry.gradient.head<2>();  // from the corner towards the edge
+      if (pair.gap < reach_) visit(pair);
+    }
+  }
+}
+
+double ContactGeometry::min_gap(const Eigen::VectorXd& x, double search) const {
+  double gap = std::numeric_limits<double>::infinity();
+  const int nodes = static_cast<int>(x.size() / 2);
+  const double radius = std::min(search + rod_radius_, wall_field_.max_query_radius());
+  WallHit hit;
+  for (int i = 0; i < nodes; ++i)
+    if (wall_field_.nearest(x.segment<2>(2 * i), radius, hit)) gap = std::min(gap, hit.distance - rod_radius_);
+  std::vector<WallHit> hits;
+  for (int i = 0; i + 1 < nodes; ++i) {
+    const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
+    corner_field_.near(0.5 * (a + b), std::min(0.5 * (b - a).norm() + radius, corner_field_.max_query_radius()), hits);
+    for (const auto& h : hits) {
+      const WallSegment& c = corners_[static_cast<std::size_t>(h.wall)];
+      gap = std::min(gap, point_segment_distance(c.a, a, b, false).distance - 0.5 * c.thickness - rod_radius_);
+    }
+  }
+  return gap;
+}
+
+double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx, double safety) const {
+  const int nodes = static_cast<int>(x.size() / 2);
+  // Limit the move so that every wall it could reach is inside the query radius.
+  const double reach_limit = 0.5 * wall_field_.max_query_radius() - rod_radius_;
+  double alpha = 1.0;
+  for (int i = 0; i < nodes; ++i) {
+    const double move = dx.segment<2>(2 * i).norm();
+    if (move > reach_limit) alpha = std::min(alpha, reach_limit / move);
+  }
+  std::vector<WallHit> hits;
+  WallHit hit;
+  for (int i = 0; i < nodes; ++i) {
+    const double move = alpha * dx.segment<2>(2 * i).norm();
+    if (move == 0.0) continue;
+    if (!wall_field_.nearest(x.segment<2>(2 * i), move + rod_radius_, hit)) continue;
+    const double gap = hit.distance - rod_radius_;
+    // The gap shrinks at most as fast as the node moves: keep a `safety` share of it.
+    if (move > safety * gap) alpha = std::min(alpha, safety * gap / dx.segment<2>(2 * i).norm());
+  }
+  for (int i = 0; i + 1 < nodes; ++i) {
+    const double move = alpha * std::max(dx.segment<2>(2 * i).norm(), dx.segment<2>(2 * i + 2).norm());
+    if (move == 0.0) continue;
+    const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
+    const double radius = std::min(0.5 * (b - a).norm() + move + rod_radius_, corner_field_.max_query_radius());
+    corner_field_.near(0.5 * (a + b), radius, hits);
+    for (const auto& h : hits) {
+      const WallSegment& c = corners_[static_cast<std::size_t>(h.wall)];
+      const double gap = point_segment_distance(c.a, a, b, false).distance - 0.5 * c.thickness - rod_radius_;
+      if (move > safety * gap) alpha = std::min(alpha, safety * gap * alpha / move);
+    }
+  }
+  return std::max(alpha, 0.0);
+}
+
+}  // namespace vascsim

@@ -1,0 +1,53 @@
+// The rod-wall contact pairs, shared by the contact barrier and friction. Two kinds, as in IPC's
+// 2D constraint set (Li et al. 2020):
+//   - node-wall: a rod node against a wall capsule; gap = |p - segment| - thickness/2 - r;
+//   - corner-edge: a wall end (a round cap of radius thickness/2) against a rod edge; this is what
+//     stops an edge from cutting a convex wall corner between two nodes (the paper's Fig. 14
+//     shows the rod crossing a wall at a corner).
+// Where a corner's nearest rod point is a node both kinds see it; the double count only stiffens
+// that contact and never changes where equilibrium lies, since every force is a gradient.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "sim/contact/point_segment_distance.h"
+#include "sim/env/wall_distance.h"
+
+namespace vascsim {
+
+struct ContactPair {
+  int first_dof = 0;     // first degree of freedom of the rod node (node pair) or edge (corner pair)
+  bool is_edge = false;  // corner-edge pair: derivatives over 4 dofs (edge ends); node pair: 2 dofs
+  double gap = 0.0;      // m, surface-to-surface distance
+  PointSegmentDistance geometry;  // derivatives of the centre distance (6 coordinates: p, a, b)
+  Eigen::Vector2d normal = Eigen::Vector2d::UnitX();  // unit, from the wall towards the rod
+};
+
+class ContactGeometry {
+ public:
+  // walls: the environment; rod_radius, reach: pairs are reported while gap < reach (m).
+  ContactGeometry(const std::vector<WallSegment>& walls, double rod_radius, double reach, double max_edge_length);
+
+  // Calls `visit` for every pair with gap < reach at positions x (2N). With `with_hessian` false
+  // the pair's Hessian is not computed.
+  void for_each_pair(const Eigen::VectorXd& x, bool with_hessian, const std::function<void(const ContactPair&)>& visit) const;
+  // The smallest gap of any node or edge against any wall within `search` (m) of it, or +inf.
+  double min_gap(const Eigen::VectorXd& x, double search) const;
+  // Largest fraction of the move x -> x + dx that keeps every gap positive, shrunk by `safety`
+  // (conservative: a distance changes no faster than the points that define it move).
+  double max_step_fraction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx, double safety) const;
+
+  double rod_radius() const { return rod_radius_; }
+
+ private:
+  std::vector<WallSegment> walls_;
+  std::vector<WallSegment> corners_;  // zero-length capsules at the wall ends, deduplicated
+  double rod_radius_;
+  double reach_;
+  double max_edge_length_;
+  WallDistanceField wall_field_;
+  WallDistanceField corner_field_;
+};
+
+}  // namespace vascsim

@@ -1,0 +1,27 @@
+// Distance from a point to a segment, with its gradient and Hessian with respect to all six
+// coordinates (point p, segment ends a and b). Contact uses it both ways round: a rod node
+// against a fixed wall segment (only the p-derivatives matter) and a fixed wall corner against a
+// moving rod edge (only the a- and b-derivatives matter).
+//
+// The distance to a convex set is C1 away from the set (Danskin), so the three cases below
+// (closest point at a, at b, or inside) join with a continuous gradient; the Hessian jumps where
+// the case changes, which Newton tolerates.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace vascsim {
+
+struct PointSegmentDistance {
+  double distance = 0.0;             // m
+  double parameter = 0.0;            // closest point = a + parameter (b - a), in [0, 1]
+  Eigen::Matrix<double, 6, 1> gradient;  // d distance / d (px py ax ay bx by)
+  Eigen::Matrix<double, 6, 6> hessian;   // symmetric
+};
+
+// Requires the point not to lie on the segment (distance > 0): contact keeps it there.
+// With `with_hessian` false the Hessian is left zero (cheaper, for queries that need no Newton).
+PointSegmentDistance point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                                            const Eigen::Vector2d& b, bool with_hessian = true);
+
+}  // namespace vascsim

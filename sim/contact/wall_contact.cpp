@@ -1,0 +1,90 @@
+#include "sim/contact/wall_contact.h"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "sim/contact/barrier.h"
+
+namespace vascsim {
+
+namespace {
+
+// Projects a symmetric block onto the positive semi-definite cone (IPC's per-pair projection):
+// the barrier's curvature term b' hess(d) is negative where the distance is convex, and an
+// indefinite Newton matrix would let the solver walk uphill.
+template <int Dim>
+Eigen::Matrix<double, Dim, Dim> project_psd(const Eigen::Matrix<double, Dim, Dim>& m) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, Dim, Dim>> eig(m);
+  const auto clamped = eig.eigenvalues().cwiseMax(0.0);
+  return eig.eigenvectors() * clamped.asDiagonal() * eig.eigenvectors().transpose();
+}
+
+double max_edge_length(const RodModel& rod) { return rod.rest_length.size() ? rod.rest_length.maxCoeff() : 0.0; }
+
+}  // namespace
+
+WallContactModule::WallContactModule(const std::vector<WallSegment>& walls, const RodModel& rod,
+                                     const ContactParams& params)
+    : params_(params), geometry_(walls, params.rod_radius, params.g_hat, 2.0 * max_edge_length(rod)) {}
+
+// E = sum over pairs of b(gap); gap = d(p, a, b) - t/2 - r, so
+//   F = -b'(gap) grad d,   K = b''(gap) grad d grad d^T + b'(gap) hess d   (projected to PSD).
+void WallContactModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const {
+  geometry_.for_each_pair(*ctx.x, stiffness != nullptr, [&](const ContactPair& pair) {
+    const BarrierValue b = contact_barrier(pair.gap, params_.g_hat, params_.kappa);
+    if (b.first == 0.0) return;
+    if (!pair.is_edge) {
+      const Eigen::Vector2d grad = pair.geometry.gradient.head<2>();
+      force.segment<2>(pair.first_dof) -= b.first * grad;
+      if (stiffness) {
+        const Eigen::Matrix2d k = b.second * grad * grad.transpose() + b.first * pair.geometry.hessian.block<2, 2>(0, 0);
+        stiffness->add_block<2>(pair.first_dof, project_psd<2>(k));
+      }
+    } else {
+      const Eigen::Vector4d grad = pair.geometry.gradient.tail<4>();
+      force.segment<4>(pair.first_dof) -= b.first * grad;
+      if (stiffness) {
+        const Eigen::Matrix4d k = b.second * grad * grad.transpose() + b.first * pair.geometry.hessian.block<4, 4>(2, 2);
+        stiffness->add_block<4>(pair.first_dof, project_psd<4>(k));
+      }
+    }
+  });
+}
+
+double WallContactModule::energy(const Eigen::VectorXd& x) const {
+  double e = 0.0;
+  geometry_.for_each_pair(x, false, [&](const ContactPair& pair) {
+    e += contact_barrier(pair.gap, params_.g_hat, params_.kappa).energy;
+  });
+  return e;
+}
+
+double WallContactModule::max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const {
+  return geometry_.max_step_fraction(*ctx.x, dx, 0.8);
+}
+
+WallFrictionModule::WallFrictionModule(const std::vector<WallSegment>& walls, const RodModel& rod,
+                                       const ContactParams& params)
+    : params_(params), geometry_(walls, params.rod_radius, params.g_hat, 2.0 * max_edge_length(rod)) {}
+
+void WallFrictionModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const {
+  if (!ctx.start || ctx.dv_dx == 0.0) return;  // friction needs motion: none in statics
+  const double eps = params_.slip_velocity;
+  geometry_.for_each_pair(ctx.start->x, false, [&](const ContactPair& pair) {
+    if (pair.is_edge) return;
+    const double lambda = -contact_barrier(pair.gap, params_.g_hat, params_.kappa).first;  // N
+    if (lambda <= 0.0) return;
+    const Eigen::Vector2d tangent(-pair.normal.y(), pair.normal.x());
+    const double vt = tangent.dot(ctx.v->segment<2>(pair.first_dof));
+    const double y = std::abs(vt) / eps;
+    const double f1 = y < 1.0 ? 2.0 * y - y * y : 1.0;
+    const double scale = params_.friction * lambda;
+    force.segment<2>(pair.first_dof) -= scale * f1 * (vt >= 0.0 ? 1.0 : -1.0) * tangent;
+    if (stiffness && y < 1.0) {
+      const double slope = scale * (2.0 - 2.0 * y) / eps;  // d|F|/d|v_t|
+      stiffness->add_block<2>(pair.first_dof, Eigen::Matrix2d(slope * ctx.dv_dx * tangent * tangent.transpose()));
+    }
+  });
+}
+
+}  // namespace vascsim

@@ -1,0 +1,48 @@
+// Implicit wall contact (the default contact mode): the IPC barrier (barrier.h) on every
+// node-wall and corner-edge pair (contact_pairs.h), with its gradient and Hessian inside the
+// Newton solve, and a step-length cap that keeps every gap open. Large time steps stay stable
+// and nothing ever passes through a wall. Channel force/contact.
+#pragma once
+
+#include "sim/contact/contact_pairs.h"
+#include "sim/contact/contact_params.h"
+#include "sim/step/force_module.h"
+
+namespace vascsim {
+
+class WallContactModule : public ForceModule {
+ public:
+  WallContactModule(const std::vector<WallSegment>& walls, const RodModel& rod, const ContactParams& params);
+  std::string channel() const override { return "force/contact"; }
+  void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
+  double max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const override;
+  // The barrier energy at positions x (J): what add() differentiates.
+  double energy(const Eigen::VectorXd& x) const;
+
+  const ContactGeometry& geometry() const { return geometry_; }
+
+ private:
+  ContactParams params_;
+  ContactGeometry geometry_;
+};
+
+// Regularised Coulomb friction between rod nodes and walls (paper V.B), lagged as in IPC: the
+// normal force magnitude lambda and the tangent t of each node-wall pair come from the state at
+// the start of the step, and
+//   F = -mu lambda f1(|v_t| / eps) sign(v_t) t,   v_t = t . v,
+//   f1(y) = 2 y - y^2 for y < 1, 1 beyond,
+// so friction is viscous-like below the slip velocity eps (stick) and Coulomb above it (slip).
+// Its Jacobian mu lambda f1'(|v_t|/eps)/eps t t^T dv_dx is symmetric and PSD. Corner-edge pairs
+// carry no friction (docs/contact.md). Channel force/friction.
+class WallFrictionModule : public ForceModule {
+ public:
+  WallFrictionModule(const std::vector<WallSegment>& walls, const RodModel& rod, const ContactParams& params);
+  std::string channel() const override { return "force/friction"; }
+  void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
+
+ private:
+  ContactParams params_;
+  ContactGeometry geometry_;
+};
+
+}  // namespace vascsim

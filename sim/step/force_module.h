@@ -1,0 +1,53 @@
+// ForceModule: one kind of force on the rod (gravity, point loads, damping, drag, and later
+// contact, friction, actuation), behind one small interface so that a new kind is a new file in
+// sim/rod/, sim/contact/ or sim/control/ and the stepper never changes.
+//
+// At each Newton iterate the stepper calls add() with the iterate's positions and the velocities
+// the time scheme implies, v = (x - x_hat) * dv_dx. The module adds its force F (N) into `force`
+// and, when `stiffness` is not null, its contribution to the Newton matrix:
+//     K += -(dF/dx + dv_dx * dF/dv)
+// which must be symmetric and stay within BandedMatrix's band (nodes i-2..i+2). A force whose
+// exact Jacobian is not symmetric (friction) adds a symmetric approximation: Newton then
+// converges linearly but still to the right answer, since convergence is judged on the residual.
+// Modules are immutable (const): per-step inputs come in ForceContext (time, controls, the state
+// at the start of the step for lagged quantities), never from scratch members.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "sim/step/banded_matrix.h"
+#include "sim/step/controls.h"
+#include "sim/step/state.h"
+
+namespace vascsim {
+
+struct ForceContext {
+  double t = 0.0;                         // s, time the forces act at (end of the step)
+  const Eigen::VectorXd* x = nullptr;     // (2N), m, current Newton iterate
+  const Eigen::VectorXd* v = nullptr;     // (2N), m/s, velocities implied by x
+  double dv_dx = 0.0;                     // 1/s, dv/dx of the scheme (1/(beta h)); 0 in statics
+  double load_scale = 1.0;                // 1 in dynamics; static load stepping ramps it 0 -> 1 and
+                                          // applied loads (gravity, point loads) multiply by it
+  const Controls* controls = nullptr;
+  const State* start = nullptr;           // state at the start of the step
+};
+
+class ForceModule {
+ public:
+  virtual ~ForceModule() = default;
+  // Frame log channel of this force (sim/io/log_metadata.h, namespace channel), e.g.
+  // "force/drag". Modules sharing a channel are summed in the log.
+  virtual std::string channel() const = 0;
+  virtual void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const = 0;
+  // The largest fraction of the Newton update x -> x + dx that keeps this force defined (a
+  // barrier must never see a closed gap). The stepper caps every line search by the minimum over
+  // all modules. x is the current iterate.
+  virtual double max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const {
+    (void)ctx;
+    (void)dx;
+    return 1.0;
+  }
+};
+
+}  // namespace vascsim
