@@ -44,6 +44,14 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
     auto section = in.object("run");
     io::read_run(section, scene.run);
   }
+  {
+    auto section = in.object("control");
+    io::read_control(section, scene.control);
+  }
+  {
+    auto section = in.object("contact");
+    io::read_contact(section, scene.contact);
+  }
   in.finish();
   return scene;
 }
@@ -65,6 +73,8 @@ std::string scene_to_json(const Scene& scene) {
   root["path"] = io::write_path(scene.path);
   root["rod"] = io::write_rod(scene.rod);
   root["run"] = io::write_run(scene.run);
+  root["control"] = io::write_control(scene.control);
+  root["contact"] = io::write_contact(scene.contact);
   return root.dump(2);
 }
 

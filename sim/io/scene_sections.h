@@ -14,11 +14,15 @@ void read_maze(FieldReader& in, MazeSpec& out);
 void read_path(FieldReader& in, PathSpec& out);
 void read_rod(FieldReader& in, RodSpec& out);
 void read_run(FieldReader& in, RunSpec& out);
+void read_control(FieldReader& in, ControlSpec& out);
+void read_contact(FieldReader& in, ContactSpec& out);
 
 nlohmann::json write_maze(const MazeSpec& spec);
 nlohmann::json write_path(const PathSpec& spec);
 nlohmann::json write_rod(const RodSpec& spec);
 nlohmann::json write_run(const RunSpec& spec);
+nlohmann::json write_control(const ControlSpec& spec);
+nlohmann::json write_contact(const ContactSpec& spec);
 
 nlohmann::json to_json(const Vec2& p);
 

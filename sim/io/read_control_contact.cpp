@@ -1,0 +1,91 @@
+#include <cmath>
+
+#include "sim/io/scene_sections.h"
+
+namespace vascsim::io {
+
+using nlohmann::json;
+
+namespace {
+
+const char* mode_name(ActuationMode m) {
+  switch (m) {
+    case ActuationMode::kKinematic: return "kinematic";
+    case ActuationMode::kField: return "field";
+    default: return "force";
+  }
+}
+
+const char* contact_name(ContactMode m) {
+  switch (m) {
+    case ContactMode::kNone: return "none";
+    case ContactMode::kPaper: return "paper";
+    default: return "implicit";
+  }
+}
+
+}  // namespace
+
+void read_control(FieldReader& in, ControlSpec& out) {
+  const std::string mode = in.choice("mode", mode_name(out.mode), {"force", "kinematic", "field"});
+  out.mode = mode == "kinematic" ? ActuationMode::kKinematic : mode == "field" ? ActuationMode::kField : ActuationMode::kForce;
+  out.kp = in.number("kp", out.kp, 0.0, 1e9);
+  out.kd = in.number("kd", out.kd, 0.0, 1e9);
+  if (out.mode == ActuationMode::kKinematic && out.kp > 1.0)
+    in.fail("kp", "a number in [0, 1] in kinematic mode (the share of the position error corrected per step)",
+            json(out.kp));
+  out.actuated_nodes = static_cast<int>(in.integer("actuated_nodes", out.actuated_nodes, 1, 1000000));
+  out.magnet_moment = in.number("magnet_moment", out.magnet_moment, 0.0, 1e6);
+  out.field_strength = in.number("field_strength", out.field_strength, 0.0, 100.0);
+  out.lead_time = in.number("lead_time", out.lead_time, 0.0, 1e6);
+  auto d = in.object("disturbance");
+  const std::string kind = d.choice("kind", out.disturbance.kind == DisturbanceKind::kPosition ? "position" : "force",
+                                    {"force", "position"});
+  out.disturbance.kind = kind == "position" ? DisturbanceKind::kPosition : DisturbanceKind::kForce;
+  out.disturbance.amplitude = d.number("amplitude", out.disturbance.amplitude, 0.0, 1e6);
+  out.disturbance.omega = d.number("omega", out.disturbance.omega, 0.0, 1e6);
+  const Vec2 direction = d.vec2("direction", out.disturbance.direction);
+  if (direction.norm() < 1e-12) d.fail("direction", "a non-zero vector [x, y]", to_json(direction));
+  out.disturbance.direction = direction.normalized();
+  d.finish();
+  in.finish();
+}
+
+json write_control(const ControlSpec& spec) {
+  return {{"mode", mode_name(spec.mode)},
+          {"kp", spec.kp},
+          {"kd", spec.kd},
+          {"actuated_nodes", spec.actuated_nodes},
+          {"magnet_moment", spec.magnet_moment},
+          {"field_strength", spec.field_strength},
+          {"lead_time", spec.lead_time},
+          {"disturbance",
+           {{"kind", spec.disturbance.kind == DisturbanceKind::kPosition ? "position" : "force"},
+            {"amplitude", spec.disturbance.amplitude},
+            {"omega", spec.disturbance.omega},
+            {"direction", to_json(spec.disturbance.direction)}}}};
+}
+
+void read_contact(FieldReader& in, ContactSpec& out) {
+  const std::string mode = in.choice("mode", contact_name(out.mode), {"implicit", "paper", "none"});
+  out.mode = mode == "paper" ? ContactMode::kPaper : mode == "none" ? ContactMode::kNone : ContactMode::kImplicit;
+  out.activation_distance = in.number("activation_distance", out.activation_distance, 0.0, 1.0);
+  out.stiffness = in.number("stiffness", out.stiffness, 0.0, 1e9);
+  out.friction = in.number("friction", out.friction, 0.0, 10.0);
+  out.slip_velocity = in.positive("slip_velocity", out.slip_velocity, 1e3);
+  out.paper_gain = in.positive("paper_gain", out.paper_gain, 1e12);
+  out.paper_iterations = static_cast<int>(in.integer("paper_iterations", out.paper_iterations, 1, 100000));
+  in.finish();
+}
+
+json write_contact(const ContactSpec& spec) {
+  return {{"mode", contact_name(spec.mode)},
+          {"activation_distance", spec.activation_distance},
+          {"stiffness", spec.stiffness},
+          {"friction", spec.friction},
+          {"slip_velocity", spec.slip_velocity},
+          {"paper_gain", spec.paper_gain},
+          {"paper_iterations", spec.paper_iterations}};
+}
+
+}  // namespace vascsim::io
