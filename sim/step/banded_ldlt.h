@@ -1,0 +1,33 @@
+// In-place LDL^T factorisation and solve of a BandedMatrix (half-bandwidth 5), without pivoting.
+//
+// Why hand-written: the Newton matrix is refactorised every iteration and at N = 1000 the whole
+// iteration must cost about 100 ns per node. Eigen has no banded solver; SimplicialLDLT fed from
+// triplets costs 700-1300 ns per node per iteration and about 300 even with a fixed pattern
+// (issue 3 measured it); LAPACK's dpbtrf needs a positive definite matrix, while the Newton
+// matrix can be indefinite (compressed or buckling rods, static solves) and LDL^T without
+// pivoting still works there whenever no pivot vanishes. A fixed compile-time band lets the
+// compiler unroll the inner loops. Tested against Eigen's dense solve in banded_ldlt_test.cpp.
+//
+// The number of negative pivots is the matrix's count of negative eigenvalues (Sylvester's law
+// of inertia), which the buckling test uses to find the critical load.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "sim/step/banded_matrix.h"
+
+namespace vascsim {
+
+struct LdltResult {
+  bool ok = false;        // false: a pivot vanished or was not finite
+  int failed_row = -1;    // the offending row when !ok
+  int negative_pivots = 0;
+};
+
+// Overwrites `a` with L (strictly lower band, unit diagonal implied) and D (on the diagonal).
+// A pivot counts as vanished when |d_i| <= pivot_tol * |A(i,i)|.
+LdltResult banded_ldlt_factor(BandedMatrix& a, double pivot_tol = 1e-13);
+// Solves (L D L^T) x = b in place, given a factor from banded_ldlt_factor.
+void banded_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b);
+
+}  // namespace vascsim
