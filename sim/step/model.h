@@ -1,0 +1,51 @@
+// Model: the constant description of a run (MuJoCo's mjModel): the compiled rod, kinematic
+// boundary conditions, solver settings and the force modules the scene switched on. Built once
+// from a Scene by build_model(); step() and solve_static() only read it.
+//
+// Adding a force kind (contact, friction, magnetic actuation, drag variants) needs no change
+// here or in the stepper: build the Model, then push the module onto `forces`:
+//   Model model = build_model(scene);
+//   model.forces.push_back(std::make_unique<MyContactModule>(model.rod, environment, ...));
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "sim/rod/rod_model.h"
+#include "sim/scene/scene.h"
+#include "sim/step/force_module.h"
+#include "sim/step/state.h"
+
+namespace vascsim {
+
+// A node held on a prescribed path: x(t) = origin + velocity t + amplitude sin(2 pi frequency t).
+// Clamped and pinned nodes are the case velocity = amplitude = 0.
+struct NodeConstraint {
+  int node = 0;
+  Vec2 origin = Vec2::Zero();     // m
+  Vec2 velocity = Vec2::Zero();   // m/s
+  Vec2 amplitude = Vec2::Zero();  // m
+  double frequency = 0.0;         // Hz
+  Vec2 position(double t) const;
+  Vec2 rate(double t) const;      // dx/dt, m/s
+};
+
+struct Model {
+  RodModel rod;
+  SolverSpec solver;
+  std::vector<NodeConstraint> constraints;  // each node at most once
+  std::vector<std::unique_ptr<const ForceModule>> forces;
+
+  int nodes() const { return rod.nodes; }
+  int dofs() const { return 2 * rod.nodes; }
+};
+
+// Compiles the scene's rod, shape, boundary, loads and solver sections. Throws InputError (naming
+// scene.file and the JSON path) for node indices out of range or a node constrained twice.
+Model build_model(const Scene& scene);
+// The state at t = 0: the initial shape at rest, constrained nodes moving with their prescription.
+State initial_state(const Model& model);
+// Resolves a node index that may count from the tip (-1 = last); returns -1 if out of range.
+int resolve_node(int node, int nodes);
+
+}  // namespace vascsim

@@ -1,0 +1,190 @@
+#include "sim/step/newton.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "sim/rod/elastic_energy.h"
+#include "sim/step/banded_ldlt.h"
+
+namespace vascsim {
+
+Workspace::Workspace(const Model& model) : jacobian(model.dofs()) {
+  const int n = model.dofs();
+  for (Eigen::VectorXd* v : {&residual, &gradient, &force, &x, &v, &dx, &x_trial, &x_hat, &v_hat, &target})
+    v->setZero(n);
+  fixed.assign(static_cast<std::size_t>(n), 0);
+}
+
+namespace {
+
+// grad E and Hess E of all stretching edges and bending hinges, straight into band storage.
+void assemble_elastic(const RodModel& rod, const Eigen::VectorXd& x, Eigen::VectorXd& gradient, BandedMatrix* hess) {
+  const int n = rod.nodes;
+  gradient.setZero();
+  for (int e = 0; e + 1 < n; ++e) {
+    const StretchElement s = stretch_energy(x.segment<2>(2 * e), x.segment<2>(2 * e + 2), rod.ea, rod.rest_length[e]);
+    gradient.segment<4>(2 * e) += s.gradient;
+    if (hess) hess->add_block<4>(2 * e, s.hessian);
+  }
+  for (int i = 1; i + 1 < n; ++i) {
+    const BendElement b = bend_energy(x.segment<2>(2 * i - 2), x.segment<2>(2 * i), x.segment<2>(2 * i + 2), rod.ei,
+                                      rod.voronoi[i], rod.rest_kappa[i]);
+    gradient.segment<6>(2 * i - 2) += b.gradient;
+    if (hess) hess->add_block<6>(2 * i - 2, b.hessian);
+  }
+}
+
+double norm_inf_free(const Eigen::VectorXd& r, const std::vector<char>& fixed) {
+  double m = 0.0;
+  for (Eigen::Index i = 0; i < r.size(); ++i)
+    if (!fixed[static_cast<std::size_t>(i)]) m = std::max(m, std::abs(r[i]));
+  return m;
+}
+
+std::string format(const char* fmt, double a, double b = 0.0) {
+  char buf[200];
+  std::snprintf(buf, sizeof buf, fmt, a, b);
+  return buf;
+}
+
+}  // namespace
+
+double assemble(const Model& model, const NewtonProblem& p, const Eigen::VectorXd& x, Workspace& ws, bool jacobian) {
+  const int n = model.nodes();
+  BandedMatrix* jac = jacobian ? &ws.jacobian : nullptr;
+  if (jac) jac->set_zero();
+  if (p.c > 0.0) {
+    ws.v.noalias() = (x - ws.x_hat) * p.c;
+  } else {
+    ws.v.setZero();
+  }
+  assemble_elastic(model.rod, x, ws.gradient, jac);
+
+  ws.force.setZero();
+  if (!model.forces.empty()) {
+    ForceContext ctx;
+    ctx.t = p.t;
+    ctx.x = &x;
+    ctx.v = &ws.v;
+    ctx.dv_dx = p.c;
+    ctx.load_scale = p.load_scale;
+    ctx.controls = p.controls;
+    ctx.start = p.start;
+    for (const auto& f : model.forces) f->add(ctx, ws.force, jac);
+  }
+
+  double inertia_max = 0.0, grad_max = 0.0, force_max = 0.0;
+  const double c2 = p.c * p.c;
+  for (int i = 0; i < n; ++i) {
+    const double m = model.rod.mass[i];
+    for (int d = 2 * i; d < 2 * i + 2; ++d) {
+      double inertia = 0.0;
+      if (p.c > 0.0) {
+        inertia = m * (ws.v[d] - ws.v_hat[d]) * p.c;
+        if (jac) jac->add_diagonal(d, m * c2);
+      }
+      if (ws.fixed[static_cast<std::size_t>(d)]) {
+        ws.residual[d] = 0.0;
+        continue;
+      }
+      ws.residual[d] = inertia + ws.gradient[d] - ws.force[d];
+      inertia_max = std::max(inertia_max, std::abs(inertia));
+      grad_max = std::max(grad_max, std::abs(ws.gradient[d]));
+      force_max = std::max(force_max, std::abs(ws.force[d]));
+    }
+  }
+  if (jac)
+    for (int d = 0; d < 2 * n; ++d)
+      if (ws.fixed[static_cast<std::size_t>(d)]) jac->fix(d);
+  return inertia_max + grad_max + force_max;
+}
+
+NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace& ws) {
+  const SolverSpec& s = model.solver;
+  const double step_floor = s.step_tol * std::max(model.rod.length, 1e-300);
+  NewtonOutcome out;
+  double scale = assemble(model, p, ws.x, ws, true);
+  double rnorm2 = ws.residual.squaredNorm();
+  for (;;) {
+    const double rinf = norm_inf_free(ws.residual, ws.fixed);
+    out.residual = rinf;
+    out.scale = scale;
+    if (!std::isfinite(rnorm2) || !std::isfinite(scale)) {
+      out.failure = "the residual is not finite (the rod blew up)";
+      return out;
+    }
+    if (rinf <= s.rel_tol * scale || rinf <= s.abs_tol) {
+      out.converged = true;
+      return out;
+    }
+    if (out.iterations >= s.max_iterations) {
+      out.failure = format("no convergence in %.0f Newton iterations (relative residual %.3g)",
+                           static_cast<double>(out.iterations), rinf / std::max(scale, 1e-300));
+      return out;
+    }
+    const LdltResult f = banded_ldlt_factor(ws.jacobian);
+    if (!f.ok) {
+      out.failure = format("singular Newton matrix at degree of freedom %.0f (node %.0f)", f.failed_row, f.failed_row / 2);
+      return out;
+    }
+    ws.dx = -ws.residual;
+    banded_ldlt_solve(ws.jacobian, ws.dx);
+    ++out.iterations;
+    const double dx_inf = ws.dx.lpNorm<Eigen::Infinity>();
+    if (!std::isfinite(dx_inf)) {
+      out.failure = "the Newton update is not finite";
+      return out;
+    }
+    // Backtracking on |r|^2: the Newton direction descends it whenever the Jacobian is exact.
+    // Modules may cap the first trial (a barrier must never see a closed gap).
+    double alpha = 1.0;
+    if (!model.forces.empty()) {
+      ForceContext ctx;
+      ctx.t = p.t;
+      ctx.x = &ws.x;
+      ctx.v = &ws.v;
+      ctx.dv_dx = p.c;
+      ctx.load_scale = p.load_scale;
+      ctx.controls = p.controls;
+      ctx.start = p.start;
+      for (const auto& f : model.forces) alpha = std::min(alpha, f->max_step_fraction(ctx, ws.dx));
+      if (!(alpha > 0.0)) {
+        out.failure = "a force module allows no step along the Newton direction";
+        return out;
+      }
+    }
+    bool accepted = false;
+    for (int k = 0; k < 12; ++k) {
+      ws.x_trial = ws.x + alpha * ws.dx;
+      const double trial_scale = assemble(model, p, ws.x_trial, ws, true);
+      const double trial2 = ws.residual.squaredNorm();
+      if (std::isfinite(trial2) && trial2 <= (1.0 - 1e-4 * alpha) * rnorm2) {
+        ws.x.swap(ws.x_trial);
+        scale = trial_scale;
+        rnorm2 = trial2;
+        accepted = true;
+        break;
+      }
+      alpha *= 0.5;
+    }
+    if (dx_inf <= step_floor) {
+      // The update is below round-off: x is as good as it gets in floating point.
+      if (!accepted) {
+        scale = assemble(model, p, ws.x, ws, true);
+        rnorm2 = ws.residual.squaredNorm();
+      }
+      out.residual = norm_inf_free(ws.residual, ws.fixed);
+      out.scale = scale;
+      out.round_off_stop = true;
+      out.converged = std::isfinite(rnorm2);
+      return out;
+    }
+    if (!accepted) {
+      out.failure = format("line search failed (relative residual %.3g, |dx| %.3g m)",
+                           std::sqrt(rnorm2) / std::max(scale, 1e-300), dx_inf);
+      return out;
+    }
+  }
+}
+
+}  // namespace vascsim

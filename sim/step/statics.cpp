@@ -1,0 +1,63 @@
+#include "sim/step/statics.h"
+
+#include <cstdio>
+
+namespace vascsim {
+
+StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls) {
+  StaticReport report;
+  std::fill(ws.fixed.begin(), ws.fixed.end(), 0);
+  for (const auto& c : model.constraints) {
+    ws.target.segment<2>(2 * c.node) = c.position(state.t);
+    ws.fixed[2 * c.node] = ws.fixed[2 * c.node + 1] = 1;
+  }
+  for (const auto& g : controls.targets) {
+    const int node = resolve_node(g.node, model.nodes());
+    if (node < 0) continue;
+    ws.target.segment<2>(2 * node) = g.position + g.velocity * (state.t - controls.time);
+    ws.fixed[2 * node] = ws.fixed[2 * node + 1] = 1;
+  }
+  Eigen::VectorXd x = state.x;
+  for (std::size_t d = 0; d < ws.fixed.size(); ++d)
+    if (ws.fixed[d]) x[static_cast<Eigen::Index>(d)] = ws.target[static_cast<Eigen::Index>(d)];
+
+  const int max_rejections = 4 * (model.solver.max_halvings + 1);
+  double lambda = 0.0;
+  double increment = 1.0 / std::max(1, model.solver.load_steps);
+  const double min_increment = increment / std::ldexp(1.0, model.solver.max_halvings);
+  NewtonProblem p;
+  p.t = state.t;
+  p.c = 0.0;
+  p.controls = &controls;
+  p.start = &state;
+  while (lambda < 1.0) {
+    const double next = std::min(1.0, lambda + increment);
+    p.load_scale = next;
+    ws.x = x;
+    const NewtonOutcome out = newton_solve(model, p, ws);
+    report.iterations += out.iterations;
+    if (out.converged) {
+      x = ws.x;
+      lambda = next;
+      ++report.increments;
+      if (out.iterations <= 4) increment *= 1.5;
+      continue;
+    }
+    ++report.rejected;
+    increment *= 0.5;
+    if (increment < min_increment || report.rejected > max_rejections) {
+      char buf[120];
+      std::snprintf(buf, sizeof buf, "static solve stopped at load factor %.4g of 1: ", lambda);
+      report.failure = buf + out.failure;
+      break;
+    }
+  }
+  report.load_scale = lambda;
+  report.ok = lambda >= 1.0;
+  state.x = x;
+  state.v.setZero();
+  state.h_prev = 0.0;
+  return report;
+}
+
+}  // namespace vascsim

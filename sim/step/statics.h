@@ -1,0 +1,30 @@
+// Static equilibrium by load stepping: the applied loads (ForceContext::load_scale) ramp from 0
+// to 1 in increments, each solved by Newton from the previous equilibrium; a failed increment is
+// halved and retried, a quick one lets the next grow. Velocity-dependent forces vanish (v = 0).
+// Needs enough constraints to remove rigid motion (otherwise the Newton matrix is singular and
+// the report says so). Validation and many user questions are static (issue 3).
+#pragma once
+
+#include <string>
+
+#include "sim/step/controls.h"
+#include "sim/step/model.h"
+#include "sim/step/newton.h"
+#include "sim/step/state.h"
+
+namespace vascsim {
+
+struct StaticReport {
+  bool ok = false;
+  int increments = 0;        // accepted load increments
+  int rejected = 0;          // failed increments (retried smaller)
+  int iterations = 0;        // Newton iterations over all increments
+  double load_scale = 0.0;   // reached
+  std::string failure;
+};
+
+// Solves from state.x; on success state.x is the equilibrium, v = 0 and the BDF2 history reset.
+// On failure state.x holds the last converged increment (load_scale in the report).
+StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls);
+
+}  // namespace vascsim

@@ -1,0 +1,100 @@
+#include "sim/step/stepper.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace vascsim {
+
+namespace {
+
+// Marks the prescribed degrees of freedom and their positions at time t.
+void set_targets(const Model& model, const Controls& controls, double t, Workspace& ws) {
+  std::fill(ws.fixed.begin(), ws.fixed.end(), 0);
+  for (const auto& c : model.constraints) {
+    ws.target.segment<2>(2 * c.node) = c.position(t);
+    ws.fixed[2 * c.node] = ws.fixed[2 * c.node + 1] = 1;
+  }
+  for (const auto& g : controls.targets) {
+    const int node = resolve_node(g.node, model.nodes());
+    if (node < 0) continue;
+    ws.target.segment<2>(2 * node) = g.position + g.velocity * (t - controls.time);
+    ws.fixed[2 * node] = ws.fixed[2 * node + 1] = 1;
+  }
+}
+
+bool attempt(const Model& model, State& state, Workspace& ws, const Controls& controls, double h, StepReport& report) {
+  // Scheme coefficients (see stepper.h).
+  double a1 = 1.0, a2 = 0.0, beta = 1.0;
+  if (model.solver.scheme == Scheme::kBdf2 && state.h_prev > 0.0) {
+    const double w = h / state.h_prev;
+    if (w <= 2.0) {
+      a1 = (1.0 + w) * (1.0 + w) / (1.0 + 2.0 * w);
+      a2 = w * w / (1.0 + 2.0 * w);
+      beta = (1.0 + w) / (1.0 + 2.0 * w);
+    }
+  }
+  if (a2 != 0.0) {
+    ws.x_hat = a1 * state.x - a2 * state.x_prev;
+    ws.v_hat = a1 * state.v - a2 * state.v_prev;
+  } else {
+    ws.x_hat = state.x;
+    ws.v_hat = state.v;
+  }
+  const double t1 = state.t + h;
+  set_targets(model, controls, t1, ws);
+  // Predictor: constant velocity.
+  ws.x = state.x + h * state.v;
+  for (std::size_t d = 0; d < ws.fixed.size(); ++d)
+    if (ws.fixed[d]) ws.x[static_cast<Eigen::Index>(d)] = ws.target[static_cast<Eigen::Index>(d)];
+
+  NewtonProblem p;
+  p.t = t1;
+  p.c = 1.0 / (beta * h);
+  p.controls = &controls;
+  p.start = &state;
+  const NewtonOutcome out = newton_solve(model, p, ws);
+  report.total_iterations += out.iterations;
+  if (!out.converged) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "at t = %.9g s with dt = %.3g s: ", state.t, h);
+    report.failure = buf + out.failure;
+    return false;
+  }
+  report.iterations = out.iterations;
+  report.residual = out.residual / std::max(out.scale, 1e-300);
+  report.round_off_stop = out.round_off_stop;
+  report.dt = h;
+  // Commit.
+  state.x_prev.swap(state.x);
+  state.v_prev.swap(state.v);
+  state.x = ws.x;
+  state.v = ws.v;
+  state.h_prev = h;
+  state.t = t1;
+  return true;
+}
+
+}  // namespace
+
+StepReport step_once(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt) {
+  StepReport report;
+  report.ok = attempt(model, state, ws, controls, dt, report);
+  return report;
+}
+
+StepReport step(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt) {
+  StepReport report;
+  const int retries = model.solver.adaptive ? model.solver.max_halvings : 0;
+  double h = dt;
+  for (int k = 0; k <= retries; ++k, h *= 0.5) {
+    if (attempt(model, state, ws, controls, h, report)) {
+      report.ok = true;
+      return report;
+    }
+    if (k < retries) ++report.rejected;
+  }
+  if (retries > 0) report.failure += " (after " + std::to_string(retries) + " retries with halved dt)";
+  return report;
+}
+
+}  // namespace vascsim

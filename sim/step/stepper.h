@@ -1,0 +1,42 @@
+// The implicit time stepper: advances a State by one step of backward Euler or BDF2, solving the
+// nonlinear step with Newton (sim/step/newton.h). The state changes only when Newton converged;
+// on failure it retries with dt/2 (SolverSpec::adaptive, on by default) and otherwise returns a
+// report with the reason and the state untouched. It never touches files.
+//
+// Schemes, for M a = F(x, v) written as a first-order system (x' = v, M v' = F):
+//   backward Euler: x1 = x0 + h v1,                     M (v1 - v0) = h F(x1, v1)
+//   BDF2 (variable step, w = h/h_prev):
+//     x1 = a1 x0 - a2 x_prev + beta h v1,  M (v1 - a1 v0 + a2 v_prev) = beta h F(x1, v1)
+//     a1 = (1+w)^2/(1+2w), a2 = w^2/(1+2w), beta = (1+w)/(1+2w)   (4/3, 1/3, 2/3 at w = 1)
+// Both are x1 = x_hat + beta h v1 and M (v1 - v_hat) = beta h F; backward Euler is a1 = beta = 1,
+// a2 = 0. BDF2 starts with one backward Euler step and falls back to it when the step ratio
+// exceeds 2 (its zero-stability limit is 1 + sqrt 2).
+#pragma once
+
+#include <string>
+
+#include "sim/step/controls.h"
+#include "sim/step/model.h"
+#include "sim/step/newton.h"
+#include "sim/step/state.h"
+
+namespace vascsim {
+
+struct StepReport {
+  bool ok = false;
+  double dt = 0.0;             // s, the step actually taken (< requested after a retry)
+  int iterations = 0;          // Newton iterations of the accepted attempt
+  int total_iterations = 0;    // including rejected attempts
+  int rejected = 0;            // attempts that failed and were retried with dt/2
+  double residual = 0.0;       // relative residual at the accepted solution
+  bool round_off_stop = false; // converged because the update fell below round-off
+  std::string failure;         // when !ok: what went wrong, at what time and dt
+};
+
+// One step of at most `dt` seconds from state.t, with `controls` held over the step.
+StepReport step(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt);
+
+// As step(), but one attempt with exactly `dt` and no retry (used by tests and benchmarks).
+StepReport step_once(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt);
+
+}  // namespace vascsim
