@@ -1,0 +1,76 @@
+#include "sim/env/centreline.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/env/maze_solvers.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim {
+
+namespace {
+
+// True if q lies on the straight line a-b between them (within rounding), so it is not a corner.
+bool between_collinear(const Vec2& a, const Vec2& q, const Vec2& b) {
+  const Vec2 u = q - a, v = b - q;
+  const double cross = u.x() * v.y() - u.y() * v.x();
+  return std::abs(cross) <= 1e-12 * u.norm() * v.norm() && u.dot(v) >= 0.0;
+}
+
+// Makes `first` the first point of the line: moves the first centre onto it when they coincide to
+// within `snap` (rounding of the cell centres), else prepends it and drops the old first point if it
+// became a straight-through point. Same for the last point with `last`.
+void attach_ends(Polyline& line, const Vec2& first, const Vec2& last, double snap) {
+  if ((line.front() - first).norm() <= snap) {
+    line.front() = first;
+  } else {
+    line.insert(line.begin(), first);
+    if (line.size() >= 3 && between_collinear(line[0], line[1], line[2])) line.erase(line.begin() + 1);
+  }
+  if ((line.back() - last).norm() <= snap) {
+    line.back() = last;
+  } else {
+    line.push_back(last);
+    const std::size_t n = line.size();
+    if (n >= 3 && between_collinear(line[n - 3], line[n - 2], line[n - 1])) line.erase(line.end() - 2);
+  }
+}
+
+}  // namespace
+
+Polyline cell_path_centreline(const GridMaze& maze, const std::vector<Cell>& cells) {
+  Polyline line;
+  const std::size_t n = cells.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    // Decide on cell indices, not on coordinates: the step direction either changes or it does not.
+    const bool corner = i == 0 || i + 1 == n ||
+                        cells[i].row - cells[i - 1].row != cells[i + 1].row - cells[i].row ||
+                        cells[i].col - cells[i - 1].col != cells[i + 1].col - cells[i].col;
+    if (corner) line.push_back(maze.centre(cells[i]));
+  }
+  return line;
+}
+
+Polyline reference_centreline(const Environment& env, const MazeSpec& maze, const PathSpec& path) {
+  if (maze.explicit_walls) {
+    const GridMaze grid = grid_from_walls(maze);  // throws if start and goal are not connected
+    Polyline line = cell_path_centreline(grid, solve_breadth_first(grid));
+    attach_ends(line, maze.start, maze.goal, 1e-9 * std::min(grid.pitch_x(), grid.pitch_y()));
+    return line;
+  }
+  const GridMaze generated = env.grid ? GridMaze() : generate_maze(maze);
+  const GridMaze& grid = env.grid ? *env.grid : generated;
+  const std::vector<Cell> cells =
+      path.solver == PathSolver::kWallFollower ? solve_wall_follower(grid) : solve_breadth_first(grid);
+  if (cells.empty())  // a generated maze is perfect, so this means a hand-made grid without a route
+    throw InputError("/path/solver: the solver found no route from the start cell to the goal cell");
+  return cell_path_centreline(grid, cells);
+}
+
+double max_clear_corner_radius(const Environment& env, const MazeSpec& maze) {
+  if (env.grid) return 0.5 * std::min(env.grid->pitch_x(), env.grid->pitch_y());
+  if (!maze.explicit_walls) return 0.5 * std::min(maze.width / maze.cols, maze.height / maze.rows);
+  return 0.5 * maze.grid_pitch;
+}
+
+}  // namespace vascsim

@@ -1,0 +1,61 @@
+// The reference motion of the tip: a polyline (the centreline, centreline.h) whose corners are
+// rounded with circular arcs, traversed at constant speed. A tip cannot turn a sharp corner at finite
+// speed without unbounded acceleration; with arcs the position is C1 (velocity continuous, |v| =
+// speed) and the acceleration is v^2/R towards the arc centre on arcs and zero on straights.
+//
+// Corner radius: each corner gets min(corner_radius, what fits). A corner turning by angle theta
+// needs a tangent length R tan(|theta|/2) on both legs; a leg shared by two corners gives each half of
+// itself, the first and last legs give all of themselves to their one corner. corner_radius 0, or a
+// reversal (theta = 180 degrees), gives a sharp corner where the velocity jumps.
+#pragma once
+
+#include <vector>
+
+#include "sim/env/geometry.h"
+
+namespace vascsim {
+
+class Trajectory {
+ public:
+  // One piece of the path: a straight line (radius == 0) or a circular arc.
+  struct Piece {
+    double s0 = 0.0;              // m, arc length along the path where the piece starts
+    double length = 0.0;          // m
+    Vec2 start = Vec2::Zero();    // m, first point
+    Vec2 direction = Vec2::Zero();// line: unit direction of travel
+    double radius = 0.0;          // m, arc radius; 0 for a line
+    Vec2 centre = Vec2::Zero();   // m, arc centre
+    double angle0 = 0.0;          // rad, polar angle of `start` about `centre`
+    double turn = 0.0;            // rad, signed sweep, > 0 counter-clockwise (a left turn)
+  };
+
+  // corners: at least one point, m (consecutive duplicates and straight-through points are
+  // dropped); corner_radius >= 0, m; speed > 0, m/s. Throws std::invalid_argument otherwise.
+  Trajectory(const Polyline& corners, double corner_radius, double speed);
+
+  double length() const { return length_; }      // m
+  double duration() const { return duration_; }  // s, length / speed
+  double speed() const { return speed_; }        // m/s
+  // At time t (s), clamped to [0, duration()]: past the end these stay at their end values (the
+  // velocity does not drop to zero; a caller that stops at the goal checks t >= duration()).
+  // A single-point trajectory has zero velocity and acceleration.
+  Vec2 position(double t) const;      // m
+  Vec2 velocity(double t) const;      // m/s
+  Vec2 acceleration(double t) const;  // m/s^2
+  // A polyline through the path for drawing and logging: every piece end, and arcs divided so that
+  // no chord is further than max_chord_error (m, > 0) from its arc.
+  Polyline sample(double max_chord_error) const;
+
+  const std::vector<Piece>& pieces() const { return pieces_; }
+
+ private:
+  const Piece& piece_at(double s) const;
+
+  std::vector<Piece> pieces_;  // in order along the path; empty for a single point
+  Vec2 origin_ = Vec2::Zero(); // m, the first point
+  double length_ = 0.0;        // m
+  double speed_ = 0.0;         // m/s
+  double duration_ = 0.0;      // s
+};
+
+}  // namespace vascsim
