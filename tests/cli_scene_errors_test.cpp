@@ -32,12 +32,12 @@ const BadScene kBadScenes[] = {
     {"walls_and_rows", R"({"maze": {"rows": 3, "walls": [{"from": [0, 0], "to": [1, 0]}]}})",
      "/maze/rows: expected no generator settings beside an explicit \"walls\" list, got 3"},
     {"wall_point", R"({"maze": {"walls": [{"from": [0, 0], "to": [1]}]}})",
-     "/maze/walls/0/to: expected an array of 2 finite numbers [x, y], got an array of 1"},
+     "/maze/walls/0/to: expected an array of 2 finite numbers [x, y], got [1]"},
     {"wall_missing_to", R"({"maze": {"walls": [{"from": [0, 0]}]}})", "/maze/walls/0/to: expected a point [x, y], got null"},
     {"start_outside", R"({"maze": {"walls": [{"from": [0, 0], "to": [1, 0]}], "start": [2, 0.5]}})",
      "/maze/start: expected a point inside the maze bounds, got [2.0,0.5]"},
     {"format", R"({"format": "vascsim-scene/9"})", "/format: expected \"vascsim-scene/1\", got \"vascsim-scene/9\""},
-    {"not_object", R"([1, 2])", "/: expected an object, got an array of 2"},
+    {"not_object", R"([1, 2])", "/: expected an object, got [1,2]"},
 };
 
 class SceneErrors : public ::testing::TestWithParam<BadScene> {};

@@ -85,9 +85,10 @@ TEST(TipController, KinematicModeImposesReferenceWhenOnTrack) {
   const double dt = 0.01;
   const TipCommand c = controller.command(1.0, dt, path.position(1.0 + dt), path.velocity(1.0));
   EXPECT_NEAR((c.position - path.position(1.0 + dt)).norm(), 0.0, 1e-12);
-  // Off track by 1 cm across the path: the command corrects Kp of it.
+  // Off track by 1 cm across the path: Algorithm 1 commands ref + Kp e, e = ref - q = -1 cm, so
+  // the command lies Kp of the error beyond the reference (pre-compensating a persistent offset).
   const TipCommand off = controller.command(1.0, dt, path.position(1.0 + dt) + Vec2(0, 0.01), path.velocity(1.0));
-  EXPECT_NEAR(off.position.y(), 0.01 - spec.kp * 0.01, 1e-12);
+  EXPECT_NEAR(off.position.y(), -spec.kp * 0.01, 1e-12);
 }
 
 TEST(TipController, FieldModePointsAlongThePathAhead) {

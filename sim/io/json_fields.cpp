@@ -18,8 +18,8 @@ std::string format_number(double value) {
 
 std::string describe(const json& value) {
   if (value.is_object()) return "an object";
-  if (value.is_array()) return "an array of " + std::to_string(value.size());
   std::string s = value.dump();
+  if (value.is_array() && s.size() > 40) return "an array of " + std::to_string(value.size());
   if (s.size() > 60) s = s.substr(0, 57) + "...";
   return s;
 }
