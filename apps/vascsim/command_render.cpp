@@ -1,0 +1,80 @@
+// vascsim render RUN_DIR: frame log to MP4 / PNG sequence / plots (render/render_run.h).
+// Built only with the renderer (VASCSIM_RENDER=ON); the file is globbed into the app either way.
+#ifdef VASCSIM_HAVE_RENDER
+#include <cstdio>
+
+#include "apps/vascsim/cli_args.h"
+#include "apps/vascsim/commands.h"
+#include "render/render_run.h"
+
+namespace vascsim::cli {
+
+namespace {
+
+const std::vector<OptionSpec>& render_options() {
+  static const std::vector<OptionSpec> options = {
+      {"mp4", "FILE", "write an H.264 MP4 review video (default RUN_DIR/video.mp4 if no output is given)"},
+      {"png-dir", "DIR", "write the frames as DIR/frame_000000.png, ..."},
+      {"plots", "DIR", "write plots (trajectory, forces, snapshots, error) as PNG into DIR"},
+      {"width", "W", "frame width in px (default 1280)"},
+      {"height", "H", "frame height in px (default 720)"},
+      {"fps", "F", "video frames per second (default 30)"},
+      {"speed", "S", "simulated seconds per video second (default 1)"},
+      {"from", "T0", "first simulated time to show, s (default: start of the log)"},
+      {"to", "T1", "last simulated time to show, s (default: end of the log)"},
+      {"camera", "fit|follow", "fit the whole maze (default) or follow the tip"},
+      {"zoom", "Z", "magnification over the fitted view (default 1)"},
+      {"actuation-scale", "PX_PER_N", "magnetic force arrow length per newton (default: automatic)"},
+      {"contact-scale", "PX_PER_N", "contact force arrow length per newton (default: automatic)"},
+      {"aa", "analytic|msaa", "anti-aliasing: analytic edges (default) or 4x multisampling"},
+      {"force", "", "overwrite existing outputs"},
+      {"help", "", "show this help"},
+  };
+  return options;
+}
+
+}  // namespace
+
+int run_render_command(int argc, char** argv) {
+  const Args args(argc, argv, 2, render_options());
+  if (args.flag("help")) {
+    std::printf("usage: vascsim render RUN_DIR [options]\n\nRenders a run's frame log (RUN_DIR/frames.vlog).\n\n%s",
+                format_options(render_options()).c_str());
+    return 0;
+  }
+  if (args.positional().size() != 1) throw UsageError("expected one RUN_DIR (or frame log file)");
+  render::RenderOptions o;
+  o.mp4_path = args.value("mp4").value_or("");
+  o.png_dir = args.value("png-dir").value_or("");
+  o.plots_dir = args.value("plots").value_or("");
+  o.view.width = static_cast<int>(args.integer("width", 1280, 16, 7680));
+  o.view.height = static_cast<int>(args.integer("height", 720, 16, 4320));
+  o.fps = static_cast<int>(args.integer("fps", 30, 1, 240));
+  o.speed = args.number("speed", 1.0, 1e-9, 1e9);
+  if (args.value("from")) o.from = args.number("from", 0, -1e12, 1e12);
+  if (args.value("to")) o.to = args.number("to", 0, -1e12, 1e12);
+  const std::string camera = args.value("camera").value_or("fit");
+  if (camera == "fit") o.view.camera = render::CameraMode::kFit;
+  else if (camera == "follow") o.view.camera = render::CameraMode::kFollow;
+  else throw UsageError("--camera: expected fit or follow, got '" + camera + "'");
+  o.view.zoom = args.number("zoom", 1.0, 1e-3, 1e3);
+  o.view.actuation_px_per_newton = args.number("actuation-scale", 0.0, 0.0, 1e15);
+  o.view.contact_px_per_newton = args.number("contact-scale", 0.0, 0.0, 1e15);
+  const std::string aa = args.value("aa").value_or("analytic");
+  if (aa == "analytic") o.aa = render::AntiAliasing::kAnalytic;
+  else if (aa == "msaa") o.aa = render::AntiAliasing::kMsaa4;
+  else throw UsageError("--aa: expected analytic or msaa, got '" + aa + "'");
+  o.force = args.flag("force");
+
+  const render::RenderReport r = render::render_run(args.positional()[0], o);
+  if (!r.note.empty()) std::fprintf(stderr, "vascsim render: %s\n", r.note.c_str());
+  if (!r.video_path.empty())
+    std::printf("wrote %s (%zu frames, %s, %d fps)\n", r.video_path.c_str(), r.frames, r.video_codec.c_str(), o.fps);
+  if (!o.png_dir.empty()) std::printf("wrote %zu PNG frames to %s\n", r.frames, o.png_dir.c_str());
+  for (const auto& p : r.plots) std::printf("wrote %s\n", p.c_str());
+  return 0;
+}
+
+}  // namespace vascsim::cli
+
+#endif  // VASCSIM_HAVE_RENDER

@@ -1,0 +1,260 @@
+#include "render/frame_painter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/vec3.hpp>
+
+namespace vascsim::render {
+
+namespace {
+
+// The palette: a light, calm page; the lumen a pale tissue tone bounded by dark walls; the rod
+// dark blue; forces in saturated colours that differ also in lightness (readable in grey).
+constexpr Rgba kPage = hex(0xEEF1F4);
+constexpr Rgba kLumen = hex(0xFCEFEA);
+constexpr Rgba kWall = hex(0x3C4650);
+constexpr Rgba kPath = hex(0x4C6EF5, 0.85f);
+constexpr Rgba kTrail = hex(0xF59F00);
+constexpr Rgba kRod = hex(0x1B3A5C);
+constexpr Rgba kRodEdge = hex(0x0B1A2A);
+constexpr Rgba kTip = hex(0x1971C2);
+constexpr Rgba kStart = hex(0x2F9E44);
+constexpr Rgba kGoal = hex(0xC92A2A);
+constexpr Rgba kActuation = hex(0xAE3EC9);
+constexpr Rgba kContact = hex(0xE8590C);
+constexpr Rgba kPanel = hex(0xFFFFFF);
+constexpr Rgba kPanelEdge = hex(0xD0D5DB);
+constexpr Rgba kInk = hex(0x212529);
+constexpr Rgba kMuted = hex(0x5F6B76);
+
+glm::vec2 apply(const glm::dmat3& m, Vec2 p) {
+  const glm::dvec3 q = m * glm::dvec3(p.x(), p.y(), 1.0);
+  return {static_cast<float>(q.x), static_cast<float>(q.y)};
+}
+
+Box2 world_box(const LogMetadata& meta, const FrameState& first) {
+  Box2 b = meta.bounds;
+  if ((b.max - b.min).minCoeff() > 0) return b;
+  // No bounds in the log: take everything the run knows about.
+  b.min = Vec2::Constant(1e300);
+  b.max = Vec2::Constant(-1e300);
+  auto grow = [&](Vec2 p) {
+    b.min = b.min.cwiseMin(p);
+    b.max = b.max.cwiseMax(p);
+  };
+  for (const auto& w : meta.walls) grow(w.a), grow(w.b);
+  for (const auto& p : meta.path) grow(p);
+  for (std::size_t i = 0; i < first.node_count(); ++i) grow(first.node(i));
+  const Vec2 pad = Vec2::Constant(std::max(1e-3, 0.05 * (b.max - b.min).maxCoeff()));
+  return {b.min - pad, b.max + pad};
+}
+
+}  // namespace
+
+ForceScales choose_force_scales(const FrameSource& source, double t0, double t1, const ViewOptions& view) {
+  const std::size_t i0 = source.frame_at_time(t0), i1 = source.frame_at_time(t1);
+  const std::size_t step = std::max<std::size_t>(1, (i1 - i0 + 1) / 2000);
+  double max_act = 0, max_con = 0;
+  FrameState f;
+  for (std::size_t i = i0; i <= i1; i += step) {
+    source.frame(i, f);
+    max_act = std::max(max_act, f.actuation_total().norm());
+    max_con = std::max(max_con, f.max_contact());
+  }
+  ForceScales s;
+  const double span = std::min(view.width * (view.panel && view.width >= 1.2 * view.height ? 0.72 : 1.0),
+                               static_cast<double>(view.height));
+  s.unit = force_unit(std::max(max_act, max_con));
+  // The largest force of the video draws this long: visible, yet short of crossing the maze.
+  if (max_act > 0) {
+    s.actuation_px_per_newton = view.actuation_px_per_newton > 0 ? view.actuation_px_per_newton : 0.16 * span / max_act;
+    s.actuation_reference = nice_floor(max_act);
+  }
+  if (max_con > 0) {
+    s.contact_px_per_newton = view.contact_px_per_newton > 0 ? view.contact_px_per_newton : 0.10 * span / max_con;
+    s.contact_reference = nice_floor(max_con);
+  }
+  return s;
+}
+
+FramePainter::FramePainter(const LogMetadata& metadata, const ViewOptions& view, const ForceScales& scales,
+                           const FrameState& first_frame)
+    : meta_(metadata), view_(view), scales_(scales), world_(world_box(metadata, first_frame)) {
+  const double w = view.width, h = view.height;
+  side_panel_ = view.panel && w >= 1.2 * h;
+  font_px_ = std::max(9, static_cast<int>(std::lround(h / 36.0)));
+  map_x0_ = 0;
+  // The panel needs about 15 characters of width whatever the frame size.
+  map_x1_ = static_cast<float>(side_panel_ ? std::round(w - std::max(0.28 * w, 15.0 * font_px_)) : w);
+  const Vec2 size = world_.max - world_.min;
+  scale_ = 0.94 * std::min((map_x1_ - map_x0_) / size.x(), h / size.y()) * view.zoom;
+}
+
+glm::dmat3 FramePainter::camera(const FrameState& frame) const {
+  const Vec2 centre = view_.camera == CameraMode::kFollow ? frame.tip() : Vec2(0.5 * (world_.min + world_.max));
+  glm::dmat3 m(1.0);
+  m[0][0] = scale_;
+  m[1][1] = -scale_;  // y up in the world, down on screen
+  m[2][0] = 0.5 * (map_x0_ + map_x1_) - centre.x() * scale_;
+  m[2][1] = 0.5 * view_.height + centre.y() * scale_;
+  return m;
+}
+
+glm::dvec2 FramePainter::to_pixel(const FrameState& frame, Vec2 world) const {
+  const glm::dvec3 q = camera(frame) * glm::dvec3(world.x(), world.y(), 1.0);
+  return {q.x, q.y};
+}
+
+void FramePainter::paint(Canvas& c, const FrameState& frame, const std::vector<Vec2>& trail) {
+  c.clear(kPage);
+  paint_world(c, camera(frame), frame, trail);
+  if (view_.panel) paint_panel(c, frame);
+}
+
+void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState& f, const std::vector<Vec2>& trail) {
+  const float h = static_cast<float>(view_.height);
+  const float s = static_cast<float>(scale_);
+  // Lumen: the environment's extent, so the walls read as the boundary of a channel.
+  const glm::vec2 b0 = apply(m, meta_.bounds.min), b1 = apply(m, meta_.bounds.max);
+  if ((meta_.bounds.max - meta_.bounds.min).minCoeff() > 0)
+    c.box(glm::min(b0, b1), glm::max(b0, b1), kLumen);
+  const float min_wall = std::max(2.0f, h / 300.0f);
+  for (const auto& w : meta_.walls)
+    c.capsule(apply(m, w.a), apply(m, w.b), 0.5f * std::max(min_wall, static_cast<float>(w.thickness) * s), kWall);
+
+  scratch_.clear();
+  for (const auto& p : meta_.path) scratch_.push_back(apply(m, p));
+  const float line = std::max(1.5f, h / 400.0f);
+  c.dashed_polyline(scratch_, line, 4 * line, 3 * line, kPath);
+
+  const float marker = std::max(4.0f, h / 90.0f);
+  if (!meta_.path.empty() || meta_.start != meta_.goal) {
+    c.disc(apply(m, meta_.start), marker, kStart);
+    c.disc(apply(m, meta_.start), 0.4f * marker, hex(0xFFFFFF));
+    c.ring(apply(m, meta_.goal), marker, 0.45f * marker, kGoal);
+    c.disc(apply(m, meta_.goal), 0.3f * marker, kGoal);
+  }
+
+  scratch_.clear();
+  for (const auto& p : trail) scratch_.push_back(apply(m, p));
+  c.polyline(scratch_, std::max(2.0f, h / 300.0f), kTrail);
+
+  if (f.has_reference) c.ring(apply(m, f.reference), 0.6f * marker, 0.25f * marker, kPath);
+
+  // The rod at its true radius, never thinner than min_rod_width_px, with a dark edge.
+  const float r = std::max(static_cast<float>(meta_.rod_outer_radius * scale_), 0.5f * float(view_.min_rod_width_px));
+  scratch_.clear();
+  for (std::size_t i = 0; i < f.node_count(); ++i) scratch_.push_back(apply(m, f.node(i)));
+  c.polyline(scratch_, 2 * r + 2.0f, kRodEdge);
+  c.polyline(scratch_, 2 * r, kRod);
+  c.disc(scratch_.back(), r + 1.5f, kTip);
+
+  // Arrows start at the node they act on and point along the force (screen y flips).
+  const float contact_w = std::max(2.0f, h / 280.0f);
+  if (scales_.contact_px_per_newton > 0 && !f.contact.empty()) {
+    for (std::size_t i = 0; i < f.node_count(); ++i) {
+      const glm::vec2 d(static_cast<float>(f.contact[2 * i] * scales_.contact_px_per_newton),
+                        static_cast<float>(-f.contact[2 * i + 1] * scales_.contact_px_per_newton));
+      if (d.x * d.x + d.y * d.y < 1.0f) continue;
+      c.arrow(scratch_[i], scratch_[i] + d, contact_w, kContact);
+    }
+  }
+  if (scales_.actuation_px_per_newton > 0 && !f.actuation.empty()) {
+    const Vec2 F = f.actuation_total() * scales_.actuation_px_per_newton;
+    const glm::vec2 d(static_cast<float>(F.x()), static_cast<float>(-F.y()));
+    if (d.x * d.x + d.y * d.y >= 1.0f) c.arrow(scratch_.back(), scratch_.back() + d, std::max(3.0f, h / 200.0f), kActuation);
+  }
+}
+
+void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
+  const float W = static_cast<float>(view_.width), H = static_cast<float>(view_.height);
+  const int fs = font_px_, small = std::max(9, static_cast<int>(std::lround(0.8 * fs)));
+  const float pad = 0.8f * fs, row = 1.45f * fs;
+  float x0, y0, x1;
+  if (side_panel_) {
+    x0 = map_x1_;
+    x1 = W;
+    y0 = 0;
+    c.box({x0, 0}, {W, H}, kPanel);
+    c.box({x0, 0}, {x0 + 1.0f, H}, kPanelEdge);
+  } else {
+    // Narrow frames: a compact translucent card over the map's top-left corner.
+    x0 = 0.5f * pad;
+    y0 = 0.5f * pad;
+    x1 = x0 + std::min(W - pad, 16.0f * fs);
+    c.box({x0, y0}, {x1, y0 + 5.6f * row + pad}, hex(0xFFFFFF, 0.88f), 0.4f * fs);
+  }
+  const float lx = x0 + pad, rx = x1 - pad;
+  float y = y0 + pad + fs;
+  if (!meta_.title.empty()) {
+    c.text(meta_.title, {lx, y}, static_cast<int>(std::lround(1.1 * fs)), kInk);
+    y += 1.3f * row;
+  }
+  const DisplayUnit mm = length_unit(0.01);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3f s", f.time);
+  auto field = [&](const char* label, const std::string& value) {
+    c.text(label, {lx, y}, fs, kMuted);
+    c.text(value, {rx, y}, fs, kInk, TextAlign::kRight);
+    y += row;
+  };
+  field("Time", buf);
+  field("Tip error", f.tip_error >= 0 ? format_value(f.tip_error, mm, 2) : std::string("n/a"));
+  field("Magnetic force", f.actuation.empty() ? std::string("n/a") : format_value(f.actuation_total().norm(), scales_.unit, 2));
+  field("Max contact", f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
+  if (!side_panel_) return;
+
+  // Legend: each symbol as drawn on the map; force arrows at the length of a round value.
+  y += 0.6f * row;
+  c.box({lx, y - fs}, {rx, y - fs + 1.0f}, kPanelEdge);
+  y += 0.4f * row;
+  const float sym_end = lx + 2.2f * fs, text_x = lx + 2.8f * fs, mid = -0.35f * fs;
+  auto entry = [&](const std::string& label) {
+    c.text(label, {text_x, y}, small, kInk);
+    y += row;
+  };
+  auto arrow_entry = [&](double px_per_newton, double reference, Rgba colour, float width, const char* what) {
+    if (px_per_newton <= 0) return;
+    c.text(what, {lx, y}, small, kInk);
+    y += row;
+    const std::string value = format_value(reference, scales_.unit, reference * scales_.unit.factor < 1 ? 1 : 0);
+    const float room = rx - lx - c.text_width(value, small) - 0.6f * fs;
+    const float len = static_cast<float>(std::min<double>(reference * px_per_newton, room));
+    c.arrow({lx, y + mid}, {lx + len, y + mid}, width, colour);
+    c.text(value, {lx + len + 0.6f * fs, y}, small, kInk);
+    y += row;
+  };
+  arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, std::max(3.0f, H / 200.0f),
+              "Magnetic force");
+  arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, std::max(2.0f, H / 280.0f),
+              "Contact force");
+  const float r = std::max(0.5f * float(view_.min_rod_width_px), static_cast<float>(meta_.rod_outer_radius * scale_));
+  c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kRodEdge);
+  c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kRod);
+  std::snprintf(buf, sizeof buf, "catheter \xC3\x98 %.2f mm", 2e3 * meta_.rod_outer_radius);
+  entry(buf);
+  c.dashed_polyline({{lx, y + mid}, {sym_end, y + mid}}, std::max(1.5f, H / 400.0f), 6.0f, 4.0f, kPath);
+  entry("reference path");
+  c.capsule({lx, y + mid}, {sym_end, y + mid}, 0.5f * std::max(2.0f, H / 300.0f), kTrail);
+  entry("tip trail");
+  const float mk = std::min(0.45f * fs, std::max(4.0f, H / 90.0f));
+  c.disc({lx + mk, y + mid}, mk, kStart);
+  c.disc({lx + mk, y + mid}, 0.4f * mk, hex(0xFFFFFF));
+  c.ring({sym_end - mk, y + mid}, mk, 0.45f * mk, kGoal);
+  c.disc({sym_end - mk, y + mid}, 0.3f * mk, kGoal);
+  entry("start, goal");
+
+  // Scale bar at the bottom: a round length about half the panel wide.
+  const double bar_m = nice_floor(0.6 * (rx - lx) / scale_);
+  const float bar_px = static_cast<float>(bar_m * scale_);
+  const float by = H - pad - 1.6f * fs;
+  c.box({lx, by - 3}, {lx + bar_px, by + 3}, kInk);
+  c.box({lx, by - 8}, {lx + 2, by + 8}, kInk);
+  c.box({lx + bar_px - 2, by - 8}, {lx + bar_px, by + 8}, kInk);
+  c.text(format_value(bar_m, length_unit(bar_m), bar_m * length_unit(bar_m).factor < 1 ? 1 : 0),
+         {lx, by + 1.4f * fs}, small, kInk);
+}
+
+}  // namespace vascsim::render

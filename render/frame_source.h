@@ -1,0 +1,71 @@
+// Reads a run's frame log for the renderer: the metadata, and the state at any time, linearly
+// interpolated between the two logged frames around it so a video's frame rate need not match
+// the log's output interval. Only the position channel is required; forces, the reference and
+// the tip error are used when the log has them.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "sim/io/log_metadata.h"
+#include "sim/log/frame_log.h"
+
+namespace vascsim::render {
+
+// One moment of a run, as the renderer needs it. Vectors are interleaved x0 y0 x1 y1 ...
+struct FrameState {
+  double time = 0;                 // s
+  std::vector<double> position;    // m, 2 per node
+  std::vector<double> actuation;   // N, 2 per node; empty if the log has no actuation channel
+  std::vector<double> contact;     // N, 2 per node; empty if absent
+  bool has_reference = false;
+  Vec2 reference = Vec2::Zero();   // m
+  double tip_error = -1;           // m; < 0 if unknown
+
+  std::size_t node_count() const { return position.size() / 2; }
+  Vec2 node(std::size_t i) const { return {position[2 * i], position[2 * i + 1]}; }
+  Vec2 tip() const { return node(node_count() - 1); }
+  // Sum of the actuation force over all nodes (N): the magnetic force on the robot.
+  Vec2 actuation_total() const;
+  // Largest per-node contact force magnitude (N); 0 without a contact channel.
+  double max_contact() const;
+};
+
+class FrameSource {
+ public:
+  // Opens RUN_DIR/frames.vlog, or the log file itself if `run_path` is a file. Throws
+  // InputError naming the file if it is missing, not a log, has no position channel or no
+  // complete frame.
+  explicit FrameSource(const std::string& run_path);
+
+  const std::string& log_path() const { return log_path_; }
+  const LogMetadata& metadata() const { return metadata_; }
+  std::size_t frame_count() const { return frame_count_; }
+  double first_time() const { return first_time_; }
+  double last_time() const { return last_time_; }
+  // Logged frame i exactly.
+  void frame(std::size_t i, FrameState& out) const;
+  // The state at time t (s), clamped to the logged range and interpolated between frames.
+  void at_time(double t, FrameState& out) const;
+  // Index of the last logged frame with time <= t.
+  std::size_t frame_at_time(double t) const { return reader_.frame_at_time(t); }
+  double time_of(std::size_t i) const { return reader_.time_of(i); }
+
+ private:
+  void unpack(const std::vector<double>& record, FrameState& out) const;
+
+  std::string log_path_;
+  FrameLogReader reader_;
+  LogMetadata metadata_;
+  std::size_t frame_count_ = 0;
+  double first_time_ = 0, last_time_ = 0;
+  int position_ = -1, actuation_ = -1, contact_ = -1, reference_ = -1, tip_error_ = -1;
+  mutable std::vector<double> record_a_, record_b_;
+  mutable FrameState next_;
+};
+
+// The file a run directory's frame log lives in.
+std::string log_path_of(const std::string& run_path);
+
+}  // namespace vascsim::render

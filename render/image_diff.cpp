@@ -1,0 +1,82 @@
+#include "render/image_diff.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#include <stb_image.h>
+
+#include "render/png_writer.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim::render {
+
+Image load_png(const std::string& path) {
+  int w = 0, h = 0, comp = 0;
+  unsigned char* data = stbi_load(path.c_str(), &w, &h, &comp, 3);
+  if (!data) {
+    const char* why = stbi_failure_reason();
+    throw InputError(path + ": cannot read PNG (" + (why ? why : "unknown error") + ")");
+  }
+  Image img;
+  img.width = w;
+  img.height = h;
+  img.rgb.assign(data, data + static_cast<std::size_t>(w) * h * 3);
+  stbi_image_free(data);
+  return img;
+}
+
+DiffStats diff_images(const Image& a, const Image& b, int tolerance, Image* heat_map) {
+  if (a.width != b.width || a.height != b.height)
+    throw InputError("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " vs " +
+                     std::to_string(b.width) + "x" + std::to_string(b.height));
+  DiffStats s;
+  s.pixels = static_cast<long>(a.width) * a.height;
+  if (heat_map) {
+    heat_map->width = a.width;
+    heat_map->height = a.height;
+    heat_map->rgb.assign(a.rgb.size(), 0);
+  }
+  double sum = 0, sum_sq = 0;
+  for (long p = 0; p < s.pixels; ++p) {
+    int worst = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int d = std::abs(int(a.rgb[3 * p + k]) - int(b.rgb[3 * p + k]));
+      worst = std::max(worst, d);
+      sum += d;
+      sum_sq += double(d) * d;
+    }
+    s.max_difference = std::max(s.max_difference, worst);
+    if (worst > tolerance) ++s.pixels_over;
+    if (heat_map) {
+      std::uint8_t* out = &heat_map->rgb[3 * p];
+      if (worst == 0) {
+        // Context: the first image as light grey, so differences stand out.
+        const int grey = (a.rgb[3 * p] * 30 + a.rgb[3 * p + 1] * 59 + a.rgb[3 * p + 2] * 11) / 100;
+        out[0] = out[1] = out[2] = static_cast<std::uint8_t>(170 + grey / 3);
+      } else {
+        const double w = std::min(1.0, worst / 64.0);  // yellow for small, red for large
+        out[0] = 255;
+        out[1] = static_cast<std::uint8_t>(220 * (1 - w));
+        out[2] = 0;
+      }
+    }
+  }
+  const double n = 3.0 * static_cast<double>(s.pixels);
+  s.mean_difference = n > 0 ? sum / n : 0;
+  const double mse = n > 0 ? sum_sq / n : 0;
+  s.psnr_db = mse > 0 ? 10 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
+  return s;
+}
+
+void write_image_png(const std::string& path, const Image& image) {
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(image.width) * image.height * 4, 255);
+  for (std::size_t p = 0, n = static_cast<std::size_t>(image.width) * image.height; p < n; ++p)
+    for (int k = 0; k < 3; ++k) rgba[4 * p + k] = image.rgb[3 * p + k];
+  write_png(path, rgba.data(), image.width, image.height);
+}
+
+}  // namespace vascsim::render

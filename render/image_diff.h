@@ -1,0 +1,35 @@
+// Image comparison for golden-image tests and `vascsim diff`: per-channel absolute differences
+// of two PNGs of the same size (RGB; alpha ignored), summarised as max, mean, the count of
+// pixels whose largest channel difference exceeds a tolerance, and PSNR, plus a heat map.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vascsim::render {
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;  // top-down rows, 3 bytes per pixel
+};
+
+// Throws InputError naming the file if it is missing or not a readable image.
+Image load_png(const std::string& path);
+
+struct DiffStats {
+  int max_difference = 0;       // largest channel difference, 0..255
+  double mean_difference = 0;   // mean over all channels of all pixels
+  long pixels_over = 0;         // pixels whose largest channel difference > tolerance
+  long pixels = 0;
+  double psnr_db = 0;           // infinity for identical images
+};
+
+// Requires equal sizes (throws InputError otherwise). `heat_map`, if not null, receives an RGB
+// image: the first picture faded to grey, with differing pixels in yellow to red by size.
+DiffStats diff_images(const Image& a, const Image& b, int tolerance, Image* heat_map);
+
+// Writes an RGB image as PNG (temporary name, then rename).
+void write_image_png(const std::string& path, const Image& image);
+
+}  // namespace vascsim::render

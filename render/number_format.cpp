@@ -1,0 +1,52 @@
+#include "render/number_format.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace vascsim::render {
+
+double nice_floor(double x) {
+  if (!(x > 0) || !std::isfinite(x)) return 1.0;
+  const double p = std::pow(10.0, std::floor(std::log10(x)));
+  const double m = x / p;
+  // The 1e-9 slack keeps exact decades (x = 10^k computed with rounding error) on themselves.
+  return (m >= 5 - 1e-9 ? 5 : m >= 2 - 1e-9 ? 2 : 1) * p;
+}
+
+std::vector<double> nice_ticks(double lo, double hi, int target) {
+  std::vector<double> ticks;
+  if (!(hi > lo)) {
+    ticks.push_back(lo);
+    return ticks;
+  }
+  const double step = nice_floor((hi - lo) / std::max(target, 1));
+  const double first = std::ceil(lo / step - 1e-9) * step;
+  for (double t = first; t <= hi + 1e-9 * step; t += step) ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
+  return ticks;
+}
+
+std::string format_tick(double value, double step) {
+  const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+  return buf;
+}
+
+DisplayUnit force_unit(double typical) {
+  if (typical >= 1.0) return {1.0, "N"};
+  if (typical >= 1e-3 || typical <= 0) return {1e3, "mN"};
+  return {1e6, "\xC2\xB5N"};
+}
+
+DisplayUnit length_unit(double typical) {
+  if (typical >= 1.0) return {1.0, "m"};
+  return {1e3, "mm"};
+}
+
+std::string format_value(double value_si, DisplayUnit unit, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f %s", digits, value_si * unit.factor, unit.name);
+  return buf;
+}
+
+}  // namespace vascsim::render

@@ -1,0 +1,329 @@
+#include "render/plots.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "render/number_format.h"
+#include "render/png_writer.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim::render {
+
+namespace {
+
+constexpr Rgba kInk = hex(0x212529);
+constexpr Rgba kGrid = hex(0xE3E6EA);
+constexpr Rgba kWall = hex(0x5C6770);
+constexpr Rgba kPath = hex(0x4C6EF5);
+constexpr Rgba kTip = hex(0xF08C00);
+constexpr Rgba kActuation = hex(0xAE3EC9);
+constexpr Rgba kContact = hex(0xE8590C);
+constexpr Rgba kSecondary = hex(0x74B816);
+constexpr Rgba kTertiary = hex(0x1098AD);
+
+// Time series of a run, sampled at up to ~5000 logged frames.
+struct Series {
+  std::vector<double> t;                     // s
+  std::vector<Vec2> tip, actuation;          // m, N
+  std::vector<double> error, max_contact, total_contact;  // m, N, N
+  bool has_actuation = false, has_contact = false, has_error = false;
+};
+
+double distance_to_polyline(const Polyline& path, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const Vec2 a = path[i - 1], d = path[i] - a;
+    const double h = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
+    best = std::min(best, (p - a - h * d).norm());
+  }
+  return best;
+}
+
+Series collect(const FrameSource& source) {
+  Series s;
+  const std::size_t n = source.frame_count(), step = std::max<std::size_t>(1, n / 5000);
+  FrameState f;
+  for (std::size_t i = 0; i < n; i += step) {
+    source.frame(i, f);
+    s.t.push_back(f.time);
+    s.tip.push_back(f.tip());
+    s.actuation.push_back(f.actuation_total());
+    s.has_actuation = !f.actuation.empty();
+    s.has_contact = !f.contact.empty();
+    double total = 0;
+    for (std::size_t k = 0; k + 1 < f.contact.size(); k += 2) total += std::hypot(f.contact[k], f.contact[k + 1]);
+    s.max_contact.push_back(f.max_contact());
+    s.total_contact.push_back(total);
+    // Tracking error: the logged value, else the distance to the controller's target, else to the path.
+    double e = f.tip_error;
+    if (e < 0 && f.has_reference) e = (f.tip() - f.reference).norm();
+    if (e < 0 && source.metadata().path.size() >= 2) e = distance_to_polyline(source.metadata().path, f.tip());
+    s.has_error = e >= 0;
+    s.error.push_back(std::max(e, 0.0));
+  }
+  return s;
+}
+
+Axes plot_area(const Canvas& c) {
+  Axes a;
+  a.left = 0.11f * c.width();
+  a.right = c.width() - 0.04f * c.width();
+  a.top = 0.09f * c.height();
+  a.bottom = c.height() - 0.12f * c.height();
+  return a;
+}
+
+void fit_range(const std::vector<double>& v, double& lo, double& hi, bool include_zero) {
+  lo = std::numeric_limits<double>::infinity();
+  hi = -lo;
+  for (double x : v) lo = std::min(lo, x), hi = std::max(hi, x);
+  if (include_zero) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
+  if (!(hi > lo)) hi = lo + 1;
+  const double pad = 0.05 * (hi - lo);
+  hi += pad;
+  if (!include_zero || lo < 0) lo -= pad;
+}
+
+void plot_line(Canvas& c, const Axes& a, const std::vector<double>& x, const std::vector<double>& y, float width,
+               Rgba colour, bool dashed = false) {
+  std::vector<glm::vec2> pts;
+  for (std::size_t i = 0; i < x.size(); ++i) pts.push_back(a.map(x[i], y[i]));
+  if (dashed) c.dashed_polyline(pts, width, 8, 5, colour);
+  else c.polyline(pts, width, colour);
+}
+
+// A legend in the top-right corner of the axes: line samples and labels.
+// `outside`: right of the axes (map plots, whose data fill the axes).
+void legend(Canvas& c, const Axes& a, const std::vector<std::pair<Rgba, std::string>>& entries, int font,
+            bool outside = false) {
+  float w = 0;
+  for (const auto& e : entries) w = std::max(w, c.text_width(e.second, font));
+  const float x1 = outside ? a.right + 20 + w + 3.5f * font : a.right - 10, x0 = x1 - w - 3.5f * font,
+              row = 1.4f * font;
+  float y = a.top + 10;
+  c.box({x0, y}, {x1, y + row * entries.size() + 0.6f * font}, hex(0xFFFFFF, 0.9f), 4);
+  c.box_outline({x0, y}, {x1, y + row * entries.size() + 0.6f * font}, 1, kGrid, 4);
+  y += row;
+  for (const auto& e : entries) {
+    c.capsule({x0 + 0.5f * font, y - 0.35f * font}, {x0 + 2.3f * font, y - 0.35f * font}, 2, e.first);
+    c.text(e.second, {x0 + 2.9f * font, y}, font, kInk);
+    y += row;
+  }
+}
+
+void draw_walls(Canvas& c, const Axes& a, const LogMetadata& m, double to_mm) {
+  for (const auto& w : m.walls)
+    c.capsule(a.map(w.a.x() * to_mm, w.a.y() * to_mm), a.map(w.b.x() * to_mm, w.b.y() * to_mm), 1.5f, kWall);
+}
+
+Axes map_axes(const Canvas& c, const FrameSource& source, const Series& s, double to_mm) {
+  Axes a = plot_area(c);
+  a.right = 0.62f * c.width();  // room for the legend on the right
+  const LogMetadata& m = source.metadata();
+  std::vector<double> xs, ys;
+  auto add = [&](Vec2 p) { xs.push_back(p.x() * to_mm), ys.push_back(p.y() * to_mm); };
+  for (const auto& w : m.walls) add(w.a), add(w.b);
+  for (const auto& p : m.path) add(p);
+  for (const auto& p : s.tip) add(p);
+  fit_range(xs, a.xmin, a.xmax, false);
+  fit_range(ys, a.ymin, a.ymax, false);
+  a.equal_aspect();
+  return a;
+}
+
+void save(Canvas& c, const std::string& path, bool force, std::vector<std::string>& written) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !force) throw InputError(path + ": exists (use --force to overwrite)");
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(c.width()) * c.height() * 4);
+  c.finish(rgba.data());
+  write_png(path, rgba.data(), c.width(), c.height());
+  written.push_back(path);
+}
+
+void no_data(Canvas& c, const Axes& a, const char* what, int font) {
+  c.text(std::string("no ") + what + " in this log", {0.5f * (a.left + a.right), 0.5f * (a.top + a.bottom)}, font,
+         kInk, TextAlign::kCenter);
+}
+
+}  // namespace
+
+glm::vec2 Axes::map(double x, double y) const {
+  return {static_cast<float>(left + (x - xmin) / (xmax - xmin) * (right - left)),
+          static_cast<float>(bottom - (y - ymin) / (ymax - ymin) * (bottom - top))};
+}
+
+void Axes::equal_aspect() {
+  const double px_per_x = (right - left) / (xmax - xmin), px_per_y = (bottom - top) / (ymax - ymin);
+  if (px_per_x > px_per_y) {
+    const double half = 0.5 * (right - left) / px_per_y, mid = 0.5 * (xmin + xmax);
+    xmin = mid - half, xmax = mid + half;
+  } else {
+    const double half = 0.5 * (bottom - top) / px_per_x, mid = 0.5 * (ymin + ymax);
+    ymin = mid - half, ymax = mid + half;
+  }
+}
+
+void draw_axes(Canvas& c, const Axes& a, const std::string& xlabel, const std::string& ylabel,
+               const std::string& title) {
+  const int font = std::max(10, static_cast<int>(std::lround(c.height() / 44.0)));
+  const int tick_font = std::max(9, static_cast<int>(std::lround(0.85 * font)));
+  const auto xt = nice_ticks(a.xmin, a.xmax, 8), yt = nice_ticks(a.ymin, a.ymax, 6);
+  const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1, ystep = yt.size() > 1 ? yt[1] - yt[0] : 1;
+  for (double x : xt) {
+    const glm::vec2 p = a.map(x, a.ymin);
+    c.box({p.x - 0.5f, a.top}, {p.x + 0.5f, a.bottom}, kGrid);
+    c.box({p.x - 0.75f, a.bottom}, {p.x + 0.75f, a.bottom + 6}, kInk);
+    c.text(format_tick(x, xstep), {p.x, a.bottom + 8 + tick_font}, tick_font, kInk, TextAlign::kCenter);
+  }
+  for (double y : yt) {
+    const glm::vec2 p = a.map(a.xmin, y);
+    c.box({a.left, p.y - 0.5f}, {a.right, p.y + 0.5f}, kGrid);
+    c.box({a.left - 6, p.y - 0.75f}, {a.left, p.y + 0.75f}, kInk);
+    c.text(format_tick(y, ystep), {a.left - 10, p.y + 0.35f * tick_font}, tick_font, kInk, TextAlign::kRight);
+  }
+  c.box_outline({a.left, a.top}, {a.right, a.bottom}, 1.5f, kInk);
+  c.text(xlabel, {0.5f * (a.left + a.right), a.bottom + 2.2f * font + 8}, font, kInk, TextAlign::kCenter);
+  c.text(ylabel, {a.left - 4.2f * font, 0.5f * (a.top + a.bottom)}, font, kInk, TextAlign::kCenter, 1.5707963f);
+  c.text(title, {0.5f * (a.left + a.right), a.top - 0.8f * font}, static_cast<int>(std::lround(1.2 * font)), kInk,
+         TextAlign::kCenter);
+}
+
+std::vector<std::string> write_plots(const FrameSource& source, const std::string& dir, bool force, int width,
+                                     int height) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir)) throw InputError(dir + ": cannot create the plots directory");
+  // Refuse before drawing anything, so a refusal leaves the directory as it was.
+  for (const char* name : {"tip_trajectory.png", "actuation_force.png", "snapshots.png", "tracking_error.png",
+                           "contact_force.png"})
+    if (fs::exists(fs::path(dir) / name, ec) && !force)
+      throw InputError((fs::path(dir) / name).string() + ": exists (use --force to overwrite)");
+  const Series s = collect(source);
+  const LogMetadata& m = source.metadata();
+  std::vector<std::string> written;
+  Canvas c(width, height);
+  const int font = std::max(10, static_cast<int>(std::lround(height / 44.0)));
+  const Rgba white = hex(0xFFFFFF);
+  double max_act = 0, max_con = 0;
+  for (const auto& f : s.actuation) max_act = std::max(max_act, f.norm());
+  for (double f : s.max_contact) max_con = std::max(max_con, f);
+  const DisplayUnit fu = force_unit(std::max(max_act, max_con));
+  const std::string force_label = std::string("force (") + fu.name + ")";
+  const double to_mm = 1e3;
+
+  {  // Tip trajectory against the reference, with actuation arrows (paper Fig. 11).
+    c.clear(white);
+    Axes a = map_axes(c, source, s, to_mm);
+    draw_axes(c, a, "x (mm)", "y (mm)", "Tip trajectory and magnetic force");
+    draw_walls(c, a, m, to_mm);
+    std::vector<glm::vec2> pts;
+    for (const auto& p : m.path) pts.push_back(a.map(p.x() * to_mm, p.y() * to_mm));
+    c.dashed_polyline(pts, 2.5f, 9, 6, kPath);
+    pts.clear();
+    for (const auto& p : s.tip) pts.push_back(a.map(p.x() * to_mm, p.y() * to_mm));
+    c.polyline(pts, 2.5f, kTip);
+    std::vector<std::pair<Rgba, std::string>> entries = {{kPath, "reference path"}, {kTip, "tip trajectory"}};
+    if (s.has_actuation && max_act > 0) {
+      const double px_per_n = 0.08 * (a.right - a.left) / max_act;
+      for (int k = 0; k < 16; ++k) {
+        const std::size_t i = (s.t.size() - 1) * k / 15;
+        const glm::vec2 p = a.map(s.tip[i].x() * to_mm, s.tip[i].y() * to_mm);
+        const Vec2 d = s.actuation[i] * px_per_n;
+        c.arrow(p, p + glm::vec2(float(d.x()), float(-d.y())), 2.5f, kActuation);
+      }
+      entries.push_back({kActuation, "magnetic force (max " + format_value(max_act, fu, 2) + ")"});
+    }
+    legend(c, a, entries, font, true);
+    save(c, (fs::path(dir) / "tip_trajectory.png").string(), force, written);
+  }
+  {  // Actuation force over time (Fig. 12).
+    c.clear(white);
+    Axes a = plot_area(c);
+    a.xmin = s.t.front();
+    a.xmax = s.t.back() > s.t.front() ? s.t.back() : s.t.front() + 1;
+    std::vector<double> mag, fx, fy;
+    for (const auto& f : s.actuation) mag.push_back(f.norm() * fu.factor), fx.push_back(f.x() * fu.factor), fy.push_back(f.y() * fu.factor);
+    std::vector<double> all = mag;
+    all.insert(all.end(), fx.begin(), fx.end());
+    all.insert(all.end(), fy.begin(), fy.end());
+    fit_range(all, a.ymin, a.ymax, true);
+    draw_axes(c, a, "time (s)", "magnetic " + force_label, "Actuation (magnetic) force on the robot");
+    if (s.has_actuation) {
+      plot_line(c, a, s.t, fx, 2, kSecondary);
+      plot_line(c, a, s.t, fy, 2, kTertiary, true);
+      plot_line(c, a, s.t, mag, 3, kActuation);
+      legend(c, a, {{kActuation, "|F|"}, {kSecondary, "Fx"}, {kTertiary, "Fy"}}, font);
+    } else {
+      no_data(c, a, "actuation force", font);
+    }
+    save(c, (fs::path(dir) / "actuation_force.png").string(), force, written);
+  }
+  {  // Whole-body snapshots with contact arrows (Fig. 14).
+    c.clear(white);
+    Axes a = map_axes(c, source, s, to_mm);
+    draw_axes(c, a, "x (mm)", "y (mm)", "Rod snapshots and contact forces");
+    draw_walls(c, a, m, to_mm);
+    constexpr int kSnapshots = 6;
+    const double px_per_n = max_con > 0 ? 0.06 * (a.right - a.left) / max_con : 0;
+    FrameState f;
+    for (int k = 0; k < kSnapshots; ++k) {
+      const std::size_t i = (source.frame_count() - 1) * static_cast<std::size_t>(k) / (kSnapshots - 1);
+      source.frame(i, f);
+      const float shade = 0.25f + 0.75f * k / (kSnapshots - 1);  // later snapshots darker
+      const Rgba rod{0.85f - 0.75f * shade, 0.90f - 0.65f * shade, 0.97f - 0.45f * shade, 1};
+      std::vector<glm::vec2> pts;
+      for (std::size_t n = 0; n < f.node_count(); ++n) pts.push_back(a.map(f.node(n).x() * to_mm, f.node(n).y() * to_mm));
+      c.polyline(pts, 3.5f, rod);
+      for (std::size_t n = 0; px_per_n > 0 && n < f.node_count() && !f.contact.empty(); ++n) {
+        const glm::vec2 d(float(f.contact[2 * n] * px_per_n), float(-f.contact[2 * n + 1] * px_per_n));
+        if (d.x * d.x + d.y * d.y >= 1) c.arrow(pts[n], pts[n] + d, 2, kContact);
+      }
+      char label[32];
+      std::snprintf(label, sizeof label, "t = %.2f s", f.time);
+      c.text(label, pts.back() + glm::vec2(6, -6), static_cast<int>(0.8 * font), kInk);
+    }
+    std::vector<std::pair<Rgba, std::string>> entries = {{hex(0x3B5BA5), "rod (lighter = earlier)"}};
+    if (px_per_n > 0) entries.push_back({kContact, "contact force (max " + format_value(max_con, fu, 2) + ")"});
+    legend(c, a, entries, font, true);
+    save(c, (fs::path(dir) / "snapshots.png").string(), force, written);
+  }
+  {  // Tracking error over time.
+    c.clear(white);
+    Axes a = plot_area(c);
+    a.xmin = s.t.front();
+    a.xmax = s.t.back() > s.t.front() ? s.t.back() : s.t.front() + 1;
+    std::vector<double> e;
+    for (double v : s.error) e.push_back(v * to_mm);
+    fit_range(e, a.ymin, a.ymax, true);
+    draw_axes(c, a, "time (s)", "tip error (mm)", "Tracking error: distance from tip to reference");
+    if (s.has_error) plot_line(c, a, s.t, e, 2.5f, kPath);
+    else no_data(c, a, "tracking error", font);
+    save(c, (fs::path(dir) / "tracking_error.png").string(), force, written);
+  }
+  {  // Contact force over time.
+    c.clear(white);
+    Axes a = plot_area(c);
+    a.xmin = s.t.front();
+    a.xmax = s.t.back() > s.t.front() ? s.t.back() : s.t.front() + 1;
+    std::vector<double> mx, tot;
+    for (std::size_t i = 0; i < s.t.size(); ++i) mx.push_back(s.max_contact[i] * fu.factor), tot.push_back(s.total_contact[i] * fu.factor);
+    std::vector<double> all = mx;
+    all.insert(all.end(), tot.begin(), tot.end());
+    fit_range(all, a.ymin, a.ymax, true);
+    draw_axes(c, a, "time (s)", "contact " + force_label, "Wall contact force");
+    if (s.has_contact) {
+      plot_line(c, a, s.t, tot, 2, kSecondary);
+      plot_line(c, a, s.t, mx, 2.5f, kContact);
+      legend(c, a, {{kContact, "largest on one node"}, {kSecondary, "sum over nodes"}}, font);
+    } else {
+      no_data(c, a, "contact force", font);
+    }
+    save(c, (fs::path(dir) / "contact_force.png").string(), force, written);
+  }
+  return written;
+}
+
+}  // namespace vascsim::render

@@ -1,0 +1,35 @@
+// Plots of a run as PNG, drawn with the same canvas as the video: the tip trajectory against
+// the reference with actuation arrows (paper Fig. 11), the actuation force over time (Fig. 12),
+// whole-body snapshots with contact arrows (Fig. 14), and the tracking error and contact force
+// over time. Each has axes, ticks, labels and units.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "render/canvas.h"
+#include "render/frame_source.h"
+
+namespace vascsim::render {
+
+// A plot area on a canvas and the data range it shows.
+struct Axes {
+  float left = 0, top = 0, right = 0, bottom = 0;  // px
+  double xmin = 0, xmax = 1, ymin = 0, ymax = 1;
+  glm::vec2 map(double x, double y) const;
+  // Widens one range so one data unit is as long in x as in y (for maps).
+  void equal_aspect();
+};
+
+// Frame, grid, ticks with labels, axis labels and a title.
+void draw_axes(Canvas& canvas, const Axes& axes, const std::string& xlabel, const std::string& ylabel,
+               const std::string& title);
+
+// Writes the plots into `dir` and returns their paths. Refuses to overwrite an existing plot
+// unless `force`. Throws InputError on failure.
+std::vector<std::string> write_plots(const FrameSource& source, const std::string& dir, bool force,
+                                     int width = 1200, int height = 800);
+
+}  // namespace vascsim::render

@@ -1,0 +1,70 @@
+#include "render/png_writer.h"
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STBI_WRITE_NO_STDIO
+#include <stb_image_write.h>
+
+#include "sim/scene/input_error.h"
+
+namespace vascsim::render {
+
+namespace {
+
+void configure_stb() {
+  // stb keeps these in globals; set them once, before any encoder thread starts.
+  static std::once_flag once;
+  std::call_once(once, [] {
+    stbi_write_png_compression_level = 2;
+    stbi_write_force_png_filter = 1;  // "sub": flat rows of a rendering become runs of zeros
+  });
+}
+
+void append(void* context, void* data, int size) {
+  auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+  const auto* bytes = static_cast<const std::uint8_t*>(data);
+  out->insert(out->end(), bytes, bytes + size);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_png(const std::uint8_t* rgba, int width, int height) {
+  configure_stb();
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width) * height * 3);
+  for (std::size_t i = 0, n = static_cast<std::size_t>(width) * height; i < n; ++i)
+    std::memcpy(&rgb[3 * i], &rgba[4 * i], 3);
+  std::vector<std::uint8_t> out;
+  if (!stbi_write_png_to_func(append, &out, width, height, 3, rgb.data(), 3 * width))
+    throw std::runtime_error("PNG encoding failed");
+  return out;
+}
+
+void write_png(const std::string& path, const std::uint8_t* rgba, int width, int height) {
+  const std::vector<std::uint8_t> bytes = encode_png(rgba, width, height);
+  const std::string temp = path + ".partial";
+  std::FILE* f = std::fopen(temp.c_str(), "wb");
+  if (!f) throw InputError(path + ": cannot create PNG (" + std::strerror(errno) + ")");
+  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  if (std::fclose(f) != 0 || !ok) {
+    std::remove(temp.c_str());
+    throw InputError(path + ": cannot write PNG (disk full?)");
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, path, ec);
+  if (ec) {
+    std::remove(temp.c_str());
+    throw InputError(path + ": cannot rename PNG (" + ec.message() + ")");
+  }
+}
+
+std::string png_frame_path(const std::string& dir, std::size_t index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%06zu.png", index);
+  return (std::filesystem::path(dir) / name).string();
+}
+
+}  // namespace vascsim::render

@@ -1,0 +1,20 @@
+// PNG files through stb_image_write, tuned for rendered frames: RGB (no alpha), a fixed row
+// filter and a low zlib effort, because the adaptive filter search and stb's default effort
+// cost ~135 ms per 720p frame while flat-coloured renders compress nearly as well this way.
+// Files are written to a temporary name and renamed, so a final name never holds a partial file.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vascsim::render {
+
+// PNG bytes of a top-down RGBA image (alpha dropped). Deterministic.
+std::vector<std::uint8_t> encode_png(const std::uint8_t* rgba, int width, int height);
+// Writes the PNG to `path` + ".partial", then renames. Throws InputError on failure.
+void write_png(const std::string& path, const std::uint8_t* rgba, int width, int height);
+// "DIR/frame_000042.png".
+std::string png_frame_path(const std::string& dir, std::size_t index);
+
+}  // namespace vascsim::render

@@ -1,0 +1,195 @@
+#include "render/render_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <condition_variable>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+
+#include "render/frame_pipeline.h"
+#include "render/frame_source.h"
+#include "render/plots.h"
+#include "render/png_writer.h"
+#include "render/video_encoder.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim::render {
+
+namespace fs = std::filesystem;
+
+void validate_render_options(const RenderOptions& o) {
+  const auto& v = o.view;
+  if (v.width < 16 || v.width > 7680 || v.height < 16 || v.height > 4320)
+    throw InputError("frame size " + std::to_string(v.width) + "x" + std::to_string(v.height) +
+                     ": expected 16..7680 x 16..4320 px");
+  if (!o.mp4_path.empty() && (v.width % 2 || v.height % 2))
+    throw InputError("video frame size must be even (yuv420p), got " + std::to_string(v.width) + "x" +
+                     std::to_string(v.height));
+  if (o.fps < 1 || o.fps > 240) throw InputError("fps: expected 1..240, got " + std::to_string(o.fps));
+  if (!(o.speed > 0) || !std::isfinite(o.speed)) throw InputError("speed: expected a positive number");
+  if (!(v.zoom > 0) || !std::isfinite(v.zoom)) throw InputError("zoom: expected a positive number");
+  if (o.from && o.to && *o.from > *o.to) throw InputError("time range: --from must not be after --to");
+}
+
+namespace {
+
+bool has_png_frames(const fs::path& dir) {
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind("frame_", 0) == 0 && it->path().extension() == ".png") return true;
+  }
+  return false;
+}
+
+void remove_png_frames(const fs::path& dir) {
+  std::error_code ec;
+  std::vector<fs::path> doomed;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind("frame_", 0) == 0 && it->path().extension() == ".png") doomed.push_back(it->path());
+  }
+  for (const auto& p : doomed) fs::remove(p, ec);
+}
+
+// Creates `dir` if needed and proves it writable with a probe file, so a bad destination fails
+// before any rendering.
+void prepare_directory(const std::string& dir, const char* what) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) throw InputError(dir + ": cannot create " + what + " directory" + (ec ? " (" + ec.message() + ")" : ""));
+  const fs::path probe = fs::path(dir) / ".vascsim-write-probe";
+  {
+    std::ofstream out(probe);
+    if (!out) throw InputError(dir + ": " + what + " directory is not writable");
+  }
+  fs::remove(probe, ec);
+}
+
+// Appends the tip positions of logged frames up to `t` to the trail, skipping points closer
+// than `spacing` (m) to the last kept one so the trail stays a few thousand points at most.
+class TrailBuilder {
+ public:
+  TrailBuilder(const FrameSource& source, double t0, double spacing)
+      : source_(source), next_(source.frame_at_time(t0)), spacing_(spacing) {}
+  void advance(const FrameState& now, std::vector<Vec2>& trail) {
+    while (next_ < source_.frame_count() && source_.time_of(next_) <= now.time) {
+      source_.frame(next_++, scratch_);
+      add(scratch_.tip(), trail, false);
+    }
+    add(now.tip(), trail, true);
+  }
+
+ private:
+  void add(Vec2 p, std::vector<Vec2>& trail, bool provisional) {
+    if (had_provisional_) trail.pop_back();
+    had_provisional_ = false;
+    if (!trail.empty() && (p - trail.back()).norm() < spacing_ && !provisional) return;
+    trail.push_back(p);
+    had_provisional_ = provisional;  // the interpolated point is replaced at the next frame
+  }
+  const FrameSource& source_;
+  std::size_t next_;
+  double spacing_;
+  bool had_provisional_ = false;
+  FrameState scratch_;
+};
+
+}  // namespace
+
+RenderReport render_run(const std::string& run_dir, const RenderOptions& options_in) {
+  RenderOptions o = options_in;
+  validate_render_options(o);
+  FrameSource source(run_dir);
+  if (o.mp4_path.empty() && o.png_dir.empty() && o.plots_dir.empty()) {
+    std::error_code ec;
+    o.mp4_path = fs::is_directory(run_dir, ec) ? (fs::path(run_dir) / "video.mp4").string()
+                                               : fs::path(run_dir).replace_extension(".mp4").string();
+    validate_render_options(o);
+  }
+  const double t0 = std::clamp(o.from.value_or(source.first_time()), source.first_time(), source.last_time());
+  const double t1 = std::clamp(o.to.value_or(source.last_time()), source.first_time(), source.last_time());
+  if (t1 < t0) throw InputError("time range [" + std::to_string(t0) + ", " + std::to_string(t1) + "] s is empty");
+
+  // Refuse to overwrite before doing any work.
+  std::error_code ec;
+  if (!o.mp4_path.empty() && fs::exists(o.mp4_path, ec) && !o.force)
+    throw InputError(o.mp4_path + ": exists (use --force to overwrite)");
+  if (!o.png_dir.empty()) {
+    if (has_png_frames(o.png_dir) && !o.force)
+      throw InputError(o.png_dir + ": already holds frame_*.png files (use --force to overwrite)");
+    prepare_directory(o.png_dir, "PNG");
+    remove_png_frames(o.png_dir);
+  }
+  RenderReport report;
+  if (!o.plots_dir.empty()) {
+    prepare_directory(o.plots_dir, "plots");
+    report.plots = write_plots(source, o.plots_dir, o.force);
+  }
+  if (o.mp4_path.empty() && o.png_dir.empty()) return report;
+
+  const auto count = static_cast<std::size_t>(std::floor((t1 - t0) * o.fps / o.speed + 1e-9)) + 1;
+  const ViewOptions& view = o.view;
+  std::unique_ptr<VideoEncoder> video;
+  if (!o.mp4_path.empty()) {
+    video = std::make_unique<VideoEncoder>(o.mp4_path, VideoSettings{view.width, view.height, o.fps, 20});
+    if (fs::exists(video->path(), ec) && !o.force) throw InputError(video->path() + ": exists (use --force to overwrite)");
+  }
+
+  FrameState state;
+  source.at_time(t0, state);
+  const ForceScales scales = choose_force_scales(source, t0, t1, view);
+  FramePainter painter(source.metadata(), view, scales, state);
+  Canvas canvas(view.width, view.height, o.aa);
+
+  // Video frames must reach the encoder in order even when two workers also compress PNGs.
+  std::mutex order_mutex;
+  std::condition_variable order_changed;
+  std::size_t next_video = 0;
+  bool failed = false;  // a worker failed: the others must not wait for its frame
+  const bool png = !o.png_dir.empty();
+  auto consume = [&](std::size_t index, const std::vector<std::uint8_t>& rgba) {
+    try {
+      if (png) write_png(png_frame_path(o.png_dir, index), rgba.data(), view.width, view.height);
+      if (video) {
+        std::unique_lock<std::mutex> lock(order_mutex);
+        order_changed.wait(lock, [&] { return next_video == index || failed; });
+        if (failed) return;
+        video->add_frame(rgba.data());
+        ++next_video;
+        order_changed.notify_all();
+      }
+    } catch (...) {
+      {
+        std::lock_guard<std::mutex> lock(order_mutex);
+        failed = true;
+      }
+      order_changed.notify_all();
+      throw;
+    }
+  };
+  const int workers = png ? 2 : 1;
+  FramePipeline pipeline(static_cast<std::size_t>(view.width) * view.height * 4, workers, workers + 2, consume);
+
+  TrailBuilder trail_builder(source, t0, 1.0 / painter.pixels_per_metre());
+  std::vector<Vec2> trail;
+  for (std::size_t k = 0; k < count; ++k) {
+    source.at_time(t0 + static_cast<double>(k) * o.speed / o.fps, state);
+    trail_builder.advance(state, trail);
+    painter.paint(canvas, state, trail);
+    canvas.finish(pipeline.acquire().data());
+    pipeline.submit(k);
+  }
+  pipeline.finish();
+  if (video) {
+    video->finish();
+    report.video_path = video->path();
+    report.video_codec = video->codec();
+    report.note = video->note();
+  }
+  report.frames = count;
+  return report;
+}
+
+}  // namespace vascsim::render

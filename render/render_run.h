@@ -1,0 +1,46 @@
+// The renderer's entry point: turn a run directory (DIR/frames.vlog, as written by
+// `vascsim run SCENE --out DIR`) into a review video, a PNG sequence and/or plots. Used by
+// `vascsim render` and by `vascsim run --render`. Reads only the frame log, so a run can be
+// re-rendered with other settings without re-simulating.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/canvas.h"
+#include "render/frame_painter.h"
+
+namespace vascsim::render {
+
+struct RenderOptions {
+  // Outputs. If all three are empty the video goes to RUN_DIR/video.mp4.
+  std::string mp4_path;   // H.264 MP4 (VP9 WebM if H.264 is unavailable)
+  std::string png_dir;    // frame_000000.png, frame_000001.png, ...
+  std::string plots_dir;  // tip_trajectory.png, actuation_force.png, snapshots.png, ...
+  ViewOptions view;       // size, camera, zoom, arrow scales
+  int fps = 30;           // video frames per second
+  double speed = 1.0;     // simulated seconds per video second
+  std::optional<double> from, to;  // s, simulated time range (default: the whole log)
+  bool force = false;     // overwrite existing outputs
+  AntiAliasing aa = AntiAliasing::kAnalytic;
+};
+
+struct RenderReport {
+  std::size_t frames = 0;  // video / PNG frames written
+  std::string video_path;  // final name (may end in .webm after a fallback)
+  std::string video_codec;
+  std::string note;        // e.g. the H.264 fallback message; empty if none
+  std::vector<std::string> plots;
+};
+
+// Throws InputError (exit code 2 in the CLI) for a missing or bad log, bad options, an
+// existing output without `force`, or an unwritable destination; no output file ever appears
+// under its final name unless complete.
+RenderReport render_run(const std::string& run_dir, const RenderOptions& options);
+
+// Checks options that need no log (sizes, rates, range order); render_run calls it too.
+void validate_render_options(const RenderOptions& options);
+
+}  // namespace vascsim::render

@@ -1,0 +1,130 @@
+// The render and diff commands through the executable: outputs appear, bad input (missing or
+// truncated log, unwritable destination, bad options) exits 2 with a message naming the
+// problem and leaves no file under a final name, and existing outputs need --force.
+#include <gtest/gtest.h>
+
+#include "render/image_diff.h"
+#include "render/png_writer.h"
+#include "render_test_util.h"
+
+namespace vascsim::render {
+namespace {
+
+using testing::run_vascsim;
+using testing::ScratchDir;
+namespace fs = std::filesystem;
+
+const char* kSmall = " --width 160 --height 120 --fps 5 ";
+
+bool has_final_outputs(const fs::path& dir) {
+  if (!fs::exists(dir)) return false;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string ext = e.path().extension().string();
+    if (ext == ".mp4" || ext == ".png" || ext == ".webm") return true;
+  }
+  return false;
+}
+
+TEST(RenderCli, WritesMp4PngAndPlots) {
+  ScratchDir dir("cli_ok");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  const auto r = run_vascsim("render '" + run + "'" + kSmall + "--png-dir '" + (dir / "png") + "' --mp4 '" +
+                                 (dir / "v.mp4") + "' --plots '" + (dir / "plots") + "'",
+                             dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "v.mp4"));
+  EXPECT_TRUE(fs::exists(png_frame_path(dir / "png", 5)));  // 0..1 s at 5 fps: 6 frames
+  EXPECT_FALSE(fs::exists(png_frame_path(dir / "png", 6)));
+  EXPECT_TRUE(fs::exists(dir / "plots/tracking_error.png"));
+  EXPECT_NE(r.out.find("v.mp4"), std::string::npos);
+}
+
+TEST(RenderCli, DefaultOutputIsVideoInRunDirAndNeedsForceToOverwrite) {
+  ScratchDir dir("cli_force");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  ASSERT_EQ(run_vascsim("render '" + run + "'" + kSmall, dir).exit_code, 0);
+  EXPECT_TRUE(fs::exists(run + "/video.mp4"));
+  const auto again = run_vascsim("render '" + run + "'" + kSmall, dir);
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("--force"), std::string::npos) << again.err;
+  EXPECT_EQ(run_vascsim("render '" + run + "'" + kSmall + "--force", dir).exit_code, 0);
+}
+
+TEST(RenderCli, MissingAndTruncatedLogsExit2WithoutOutput) {
+  ScratchDir dir("cli_badlog");
+  auto r = run_vascsim("render '" + (dir / "nope") + "' --mp4 '" + (dir / "out/v.mp4") + "'", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no such run directory"), std::string::npos) << r.err;
+
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  const std::string log = run + "/frames.vlog";
+  const std::string bytes = testing::read_bytes(log);
+  {
+    std::ofstream cut(log, std::ios::binary | std::ios::trunc);
+    cut.write(bytes.data(), 40);  // inside the header
+  }
+  fs::create_directories(dir / "out");
+  r = run_vascsim("render '" + run + "'" + kSmall + "--mp4 '" + (dir / "out/v.mp4") + "' --png-dir '" +
+                      (dir / "out/png") + "'",
+                  dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("truncated"), std::string::npos) << r.err;
+  EXPECT_FALSE(has_final_outputs(dir / "out"));
+}
+
+TEST(RenderCli, UnwritableDestinationExits2WithoutPartialFiles) {
+  ScratchDir dir("cli_unwritable");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  { std::ofstream(dir / "a_file") << "x"; }  // a directory cannot be created under a file
+  auto r = run_vascsim("render '" + run + "'" + kSmall + "--mp4 '" + (dir / "a_file/v.mp4") + "'", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("a_file/v.mp4"), std::string::npos) << r.err;
+  r = run_vascsim("render '" + run + "'" + kSmall + "--png-dir '" + (dir / "a_file/png") + "'", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("a_file/png"), std::string::npos) << r.err;
+  EXPECT_FALSE(has_final_outputs(dir.path()));
+}
+
+TEST(RenderCli, BadOptionsExit2) {
+  ScratchDir dir("cli_options");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  for (const std::string opts : {"--width abc", "--camera sideways", "--fps 0", "--zoom -1", "--width 161 --height 120",
+                                 "--from 2 --to 1", "--bogus", ""}) {
+    const std::string args = opts.empty() ? "render" : "render '" + run + "' " + opts;
+    const auto r = run_vascsim(args, dir);
+    EXPECT_EQ(r.exit_code, 2) << opts << ": " << r.err;
+    EXPECT_FALSE(r.err.empty()) << opts;
+  }
+  EXPECT_FALSE(fs::exists(run + "/video.mp4"));
+}
+
+TEST(DiffCli, ExitCodesAndHeatMap) {
+  ScratchDir dir("cli_diff");
+  Image a;
+  a.width = 8;
+  a.height = 4;
+  a.rgb.assign(8 * 4 * 3, 200);
+  Image b = a;
+  b.rgb[3 * 9] = 150;  // one pixel off by 50
+  write_image_png(dir / "a.png", a);
+  write_image_png(dir / "b.png", b);
+  auto r = run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "a.png") + "'", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("inf"), std::string::npos);
+  r = run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "b.png") + "' --out '" + (dir / "heat.png") + "'", dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("max difference  50"), std::string::npos) << r.out;
+  const Image heat = load_png(dir / "heat.png");
+  EXPECT_EQ(heat.rgb[3 * 9], 255);  // the differing pixel is marked red-ish
+  EXPECT_EQ(run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "b.png") + "' --tolerance 50", dir).exit_code, 0);
+  EXPECT_EQ(run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "missing.png") + "'", dir).exit_code, 2);
+  Image c = a;
+  c.width = 4;
+  c.rgb.resize(4 * 4 * 3);
+  write_image_png(dir / "c.png", c);
+  EXPECT_EQ(run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "c.png") + "'", dir).exit_code, 2);
+  EXPECT_EQ(run_vascsim("diff '" + (dir / "a.png") + "' --tolerance x", dir).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace vascsim::render

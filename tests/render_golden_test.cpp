@@ -1,0 +1,77 @@
+// Golden images: small frames and a plot of fixed synthetic runs, compared with tests/golden/
+// through the same diff code as `vascsim diff`. Regenerate on purpose with scripts/update-goldens.
+#include <gtest/gtest.h>
+
+#include "render/plots.h"
+#include "render/png_writer.h"
+#include "render/render_run.h"
+#include "render_test_util.h"
+
+namespace vascsim::render {
+namespace {
+
+using testing::ScratchDir;
+namespace fs = std::filesystem;
+
+TEST(RenderGolden, FitFrameOfSerpentineMaze) {
+  ScratchDir dir("golden_fit");
+  SyntheticLogSpec spec;
+  const std::string run = testing::make_run(dir, spec);
+  RenderOptions o;
+  o.png_dir = dir / "png";
+  o.view.width = 320;
+  o.view.height = 240;
+  o.from = 0.5;
+  o.to = 0.5;
+  const RenderReport r = render_run(run, o);
+  ASSERT_EQ(r.frames, 1u);
+  testing::expect_matches_golden(png_frame_path(o.png_dir, 0), "frame_fit_320x240.png");
+}
+
+TEST(RenderGolden, FollowCameraZoomedOnTip) {
+  ScratchDir dir("golden_follow");
+  SyntheticLogSpec spec;
+  const std::string run = testing::make_run(dir, spec);
+  RenderOptions o;
+  o.png_dir = dir / "png";
+  o.view.width = 320;
+  o.view.height = 240;
+  o.view.camera = CameraMode::kFollow;
+  o.view.zoom = 2.5;
+  o.from = 1.0;
+  o.to = 1.0;
+  render_run(run, o);
+  testing::expect_matches_golden(png_frame_path(o.png_dir, 0), "frame_follow_320x240.png");
+}
+
+TEST(RenderGolden, TipTrajectoryPlot) {
+  ScratchDir dir("golden_plot");
+  SyntheticLogSpec spec;
+  spec.frames = 30;
+  spec.duration = 3.0;
+  const std::string run = testing::make_run(dir, spec);
+  FrameSource source(run);
+  const auto written = write_plots(source, dir / "plots", false, 480, 320);
+  ASSERT_EQ(written.size(), 5u);
+  testing::expect_matches_golden(dir / "plots/tip_trajectory.png", "plot_tip_trajectory_480x320.png");
+  testing::expect_matches_golden(dir / "plots/actuation_force.png", "plot_actuation_force_480x320.png");
+}
+
+TEST(RenderGolden, DiffDetectsAChangedFrame) {
+  // The golden check must be able to fail: a frame at another time differs from the golden.
+  ScratchDir dir("golden_negative");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  RenderOptions o;
+  o.png_dir = dir / "png";
+  o.view.width = 320;
+  o.view.height = 240;
+  o.from = 0.9;
+  o.to = 0.9;
+  render_run(run, o);
+  const Image a = load_png(png_frame_path(o.png_dir, 0));
+  const Image b = load_png(std::string(VASCSIM_SOURCE_DIR) + "/tests/golden/frame_fit_320x240.png");
+  EXPECT_GT(diff_images(a, b, 24, nullptr).pixels_over, 100);
+}
+
+}  // namespace
+}  // namespace vascsim::render

@@ -1,0 +1,101 @@
+// Helpers shared by the render tests: scratch directories, synthetic logs, running the vascsim
+// executable, and comparing against golden images under tests/golden/.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "render/image_diff.h"
+#include "render/synthetic_log.h"
+
+namespace vascsim::render::testing {
+
+namespace fs = std::filesystem;
+
+// A fresh directory, removed when the object goes out of scope.
+class ScratchDir {
+ public:
+  explicit ScratchDir(const std::string& name)
+      : path_(fs::temp_directory_path() / ("vascsim_" + name + "_" + std::to_string(::getpid()))) {
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  std::string operator/(const std::string& child) const { return (path_ / child).string(); }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// A run directory holding frames.vlog from `spec`.
+inline std::string make_run(const ScratchDir& dir, const SyntheticLogSpec& spec, const std::string& name = "run") {
+  const std::string run = dir / name;
+  fs::create_directories(run);
+  write_synthetic_log((fs::path(run) / "frames.vlog").string(), spec);
+  return run;
+}
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+// Runs `vascsim ARGS` (arguments already shell-quoted where needed).
+inline CommandResult run_vascsim(const std::string& args, const ScratchDir& dir) {
+  const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd = std::string("'") + VASCSIM_EXE + "' " + args + " >'" + out + "' 2>'" + err + "'";
+  const int status = std::system(cmd.c_str());
+  CommandResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  auto slurp = [](const std::string& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+inline std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Compares `png` with tests/golden/NAME. With VASCSIM_UPDATE_GOLDENS=1 in the environment it
+// replaces the golden instead (scripts/update-goldens), so goldens change only on purpose.
+// Tolerance: llvmpipe is deterministic here, but a small slack keeps the goldens valid across
+// Mesa point releases that may round an edge pixel differently.
+inline void expect_matches_golden(const std::string& png, const std::string& name) {
+  const fs::path golden = fs::path(VASCSIM_SOURCE_DIR) / "tests" / "golden" / name;
+  const char* update = std::getenv("VASCSIM_UPDATE_GOLDENS");
+  if (update && std::string(update) == "1") {
+    fs::copy_file(png, golden, fs::copy_options::overwrite_existing);
+    GTEST_SKIP() << "updated golden " << golden;
+  }
+  ASSERT_TRUE(fs::exists(golden)) << golden << " missing: run scripts/update-goldens";
+  const Image a = load_png(png), b = load_png(golden.string());
+  ASSERT_EQ(a.width, b.width);
+  ASSERT_EQ(a.height, b.height);
+  const DiffStats s = diff_images(a, b, 24, nullptr);
+  EXPECT_LE(s.pixels_over, a.width * a.height / 1000)
+      << name << ": " << s.pixels_over << " pixels differ by more than 24 (max " << s.max_difference
+      << ", PSNR " << s.psnr_db << " dB); compare with: vascsim diff " << png << " " << golden << " --out diff.png";
+  EXPECT_GT(s.psnr_db, 40.0) << name;
+}
+
+}  // namespace vascsim::render::testing
