@@ -17,6 +17,9 @@ struct Benchmark {
 
 const std::vector<Benchmark>& benchmarks() {
   static const std::vector<Benchmark> table = {
+#ifdef VASCSIM_HAVE_RENDER
+      {"render", "renderer frames/s at 720p and 1080p, MP4 and PNG", run_bench_render},
+#endif
   };
   return table;
 }

@@ -6,6 +6,10 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"maze", "generate and solve a maze; write walls and path as JSON", run_maze_command},
       {"bench", "measure speed and accuracy (vascsim bench --help)", run_bench_command},
+#ifdef VASCSIM_HAVE_RENDER
+      {"render", "render a run's frame log to MP4, PNG frames and plots", run_render_command},
+      {"diff", "compare two PNG images (golden-image tests)", run_diff_command},
+#endif
   };
   return table;
 }
