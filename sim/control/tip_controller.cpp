@@ -38,8 +38,8 @@ TipCommand TipController::command(double t, double dt, const Vec2& tip_position,
   // plus PD on the error. The feedforward alone moves an undisturbed, unloaded tip exactly along
   // the reference; the PD terms reject the disturbance and the pull of the body.
   const double reference_speed = c.reference_velocity.norm();
-  c.force = plant_.mass * reference_acceleration + plant_.drag_coefficient * reference_speed * c.reference_velocity +
-            spec_.kp * c.error + spec_.kd * velocity_error;
+  c.feedforward = plant_.mass * reference_acceleration + plant_.drag_coefficient * reference_speed * c.reference_velocity;
+  c.force = c.feedforward + spec_.kp * c.error + spec_.kd * velocity_error;
   if (spec_.mode == ActuationMode::kField) {
     // Point the field where the path heads a short way ahead; the dipole torque m x B then turns
     // the tip into the channel before the body reaches the corner.

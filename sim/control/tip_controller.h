@@ -20,8 +20,12 @@ struct TipCommand {
   Vec2 reference = Vec2::Zero();           // m, reference tip position at the step's end time
   Vec2 reference_velocity = Vec2::Zero();  // m/s
   Vec2 error = Vec2::Zero();               // m, reference - tip at the start of the step
-  // Force and field modes: the total magnetic force on the tip node(s), N.
+  // Force and field modes: the total magnetic force on the tip node(s) if the PD terms act on the
+  // state at the start of the step, N; `feedforward` is its part that does not depend on the state.
+  // The stepper applies feedforward + PD implicitly instead (TipServo). Kinematic mode: the
+  // force estimate of paper III.B (drag compensation plus the PD correction).
   Vec2 force = Vec2::Zero();
+  Vec2 feedforward = Vec2::Zero();
   // Kinematic mode: the tip's imposed position and velocity at the step's end, m and m/s.
   Vec2 position = Vec2::Zero();
   Vec2 velocity = Vec2::Zero();

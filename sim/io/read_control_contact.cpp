@@ -34,7 +34,7 @@ void read_control(FieldReader& in, ControlSpec& out) {
   if (out.mode == ActuationMode::kKinematic && out.kp > 1.0)
     in.fail("kp", "a number in [0, 1] in kinematic mode (the share of the position error corrected per step)",
             json(out.kp));
-  out.actuated_nodes = static_cast<int>(in.integer("actuated_nodes", out.actuated_nodes, 1, 1000000));
+  out.actuated_nodes = static_cast<int>(in.integer("actuated_nodes", out.actuated_nodes, 1, 3));
   out.magnet_moment = in.number("magnet_moment", out.magnet_moment, 0.0, 1e6);
   out.field_strength = in.number("field_strength", out.field_strength, 0.0, 100.0);
   out.lead_time = in.number("lead_time", out.lead_time, 0.0, 1e6);

@@ -1,0 +1,183 @@
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "apps/vascsim/cli_args.h"
+#include "apps/vascsim/commands.h"
+#include "sim/io/log_metadata.h"
+#include "sim/io/output_file.h"
+#include "sim/io/run_summary.h"
+#include "sim/io/scene_reader.h"
+#include "sim/run/run.h"
+#include "sim/scene/input_error.h"
+#ifdef VASCSIM_HAVE_RENDER
+#include "render/render_run.h"
+#endif
+
+namespace vascsim::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<OptionSpec> kOptions = {
+    {"out", "DIR", "run directory: DIR/frames.vlog (frame log), DIR/summary.json (required)"},
+    {"force", "", "reuse DIR even if it holds files (they are replaced)"},
+    {"duration", "T", "simulated time in s (overrides the scene's run.duration)"},
+    {"quiet", "", "no progress line"},
+    {"render", "", "render DIR/video.mp4 when the run ends (see vascsim render --help)"},
+    {"help", "", "show this help"},
+};
+
+void print_usage() {
+  std::printf(
+      "usage: vascsim run SCENE --out DIR [--force] [--duration T] [--quiet] [--render]\n\n"
+      "Simulates the scene and streams every frame to DIR/frames.vlog (format in docs/frame-log.md);\n"
+      "writes DIR/summary.json when the run ends or fails. Exit code 1 if the simulation failed\n"
+      "(every frame computed before the failure is kept), 2 for bad input.\n\noptions:\n%s",
+      format_options(kOptions).c_str());
+}
+
+class LogSink : public FrameSink {
+ public:
+  explicit LogSink(FrameLogWriter& writer) : writer_(writer) {}
+  void write(double time, const std::vector<double>& values) override { writer_.append(time, values); }
+
+ private:
+  FrameLogWriter& writer_;
+};
+
+// Progress on a terminal only, refreshed at most 10 times a second, shown after the first second.
+class Progress {
+ public:
+  Progress(bool enabled, double duration) : enabled_(enabled && ::isatty(STDERR_FILENO)), duration_(duration) {}
+  void update(double t) {
+    if (!enabled_) return;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (elapsed < 1.0 || elapsed - last_ < 0.1) return;
+    last_ = elapsed;
+    const double fraction = std::min(t / duration_, 1.0);
+    const double eta = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+    std::fprintf(stderr, "\r  t = %.2f / %.2f s  %3.0f%%  elapsed %.1f s  ETA %.1f s   ", t, duration_, 100 * fraction,
+                 elapsed, eta);
+    shown_ = true;
+  }
+  void finish() {
+    if (shown_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool enabled_;
+  double duration_;
+  Clock::time_point start_ = Clock::now();
+  double last_ = 0.0;
+  bool shown_ = false;
+};
+
+LogMetadata metadata_for(const Scene& scene, const Run& run) {
+  LogMetadata m;
+  m.title = scene.name;
+  m.scene_json = scene_to_json(scene);
+  m.rod_outer_radius = scene.rod.outer_radius;
+  m.rod_length = scene.rod.length;
+  m.output_interval = scene.run.output_interval;
+  if (const Navigation* nav = run.navigation()) {
+    m.bounds = nav->environment.bounds;
+    m.walls = nav->environment.walls;
+    m.lumen_width = nav->environment.lumen_width;
+    m.path = nav->trajectory->sample(1e-4);
+    m.start = nav->environment.start;
+    m.goal = nav->environment.goal;
+  } else {
+    // Free space: the bounds of the initial rod, padded by a tenth of its length.
+    const auto& x = run.state().x;
+    Box2 b{Vec2(x[0], x[1]), Vec2(x[0], x[1])};
+    for (Eigen::Index i = 0; i < x.size(); i += 2) {
+      b.min = b.min.cwiseMin(Vec2(x[i], x[i + 1]));
+      b.max = b.max.cwiseMax(Vec2(x[i], x[i + 1]));
+    }
+    const Vec2 pad = Vec2::Constant(0.1 * scene.rod.length);
+    m.bounds = {b.min - pad, b.max + pad};
+  }
+  return m;
+}
+
+}  // namespace
+
+int run_run_command(int argc, char** argv) {
+  Args args(argc, argv, 2, kOptions);
+  if (args.flag("help")) {
+    print_usage();
+    return 0;
+  }
+  if (args.positional().size() != 1) throw UsageError("expected exactly one SCENE file");
+  const auto out = args.value("out");
+  if (!out) throw UsageError("--out DIR is required");
+
+  Scene scene = read_scene_file(args.positional().front());
+  scene.run.duration = args.number("duration", scene.run.duration, 1e-9, 1e7);
+
+  // Refuse to mix a new run into a directory holding someone's files.
+  std::error_code ec;
+  if (fs::exists(*out, ec)) {
+    if (!fs::is_directory(*out, ec)) throw InputError(*out + ": exists and is not a directory");
+    if (!fs::is_empty(*out, ec) && !args.flag("force"))
+      throw InputError(*out + ": directory is not empty (pass --force to replace its run files)");
+  } else if (!fs::create_directories(*out, ec)) {
+    throw InputError(*out + ": cannot create directory (" + ec.message() + ")");
+  }
+
+  std::unique_ptr<Navigation> navigation;
+  if (scene.has_maze) navigation = prepare_navigation(scene);
+  Model model = build_model(scene);
+  if (navigation) add_navigation_modules(scene, *navigation, model);
+  Run run(scene, std::move(model), std::move(navigation));
+
+  FrameLogHeader header;
+  header.node_count = static_cast<std::uint32_t>(scene.rod.nodes);
+  header.channels = run.channels();
+  header.metadata = write_log_metadata(metadata_for(scene, run));
+  const std::string log_path = (fs::path(*out) / "frames.vlog").string();
+  FrameLogWriter writer(log_path, header);
+  LogSink sink(writer);
+  Progress progress(!args.flag("quiet"), scene.run.duration);
+  const bool ok = run.run(sink, [&](double t) { progress.update(t); });
+  progress.finish();
+  writer.close();
+
+  const std::string summary_path = (fs::path(*out) / "summary.json").string();
+  write_file_atomically(summary_path, run_summary_json(scene, run));
+  const RunStatistics& s = run.statistics();
+  std::printf("%s: %d steps, %.2f s simulated in %.2f s (%.1fx real time), %zu frames -> %s\n",
+              ok ? "done" : "FAILED", s.steps, s.simulated_time, s.wall_time,
+              s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0, s.frames, log_path.c_str());
+  if (run.navigation())
+    std::printf("goal %s%s, tip error rms %.2f mm max %.2f mm, max penetration %.3f mm\n",
+                s.goal_reached ? "reached at t = " : "not reached",
+                s.goal_reached ? (std::to_string(s.goal_time) + " s").c_str() : "", 1e3 * s.tip_error_rms,
+                1e3 * s.tip_error_max, 1e3 * s.max_penetration);
+  std::printf("summary: %s\n", summary_path.c_str());
+  if (!ok) {
+    std::fprintf(stderr, "vascsim run: simulation failed: %s\n", s.failure.c_str());
+    return 1;
+  }
+  if (args.flag("render")) {
+#ifdef VASCSIM_HAVE_RENDER
+    render::RenderOptions options;
+    options.mp4_path = (fs::path(*out) / "video.mp4").string();
+    options.force = args.flag("force");
+    const render::RenderReport report = render::render_run(*out, options);
+    if (!report.note.empty()) std::printf("%s\n", report.note.c_str());
+    std::printf("video: %s (%zu frames)\n", report.video_path.c_str(), report.frames);
+#else
+    throw UsageError("--render: this build has no renderer (configure with -DVASCSIM_RENDER=ON)");
+#endif
+  }
+  return 0;
+}
+
+}  // namespace vascsim::cli

@@ -1,0 +1,59 @@
+#include "sim/io/run_summary.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace vascsim {
+
+using nlohmann::json;
+
+namespace {
+
+// JSON has no NaN or infinity: unknown values are null.
+json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+}  // namespace
+
+std::string run_summary_json(const Scene& scene, const Run& run) {
+  const RunStatistics& s = run.statistics();
+  json j;
+  j["format"] = "vascsim-summary/1";
+  j["scene"] = scene.name;
+  j["ok"] = !s.failed;
+  j["failure"] = s.failed ? json(s.failure) : json(nullptr);
+  j["steps"] = s.steps;
+  j["rejected_steps"] = s.rejected_steps;
+  j["newton_iterations"] = {{"total", s.newton_iterations},
+                            {"mean", s.steps ? static_cast<double>(s.newton_iterations) / s.steps : 0.0},
+                            {"max", s.newton_iterations_max}};
+  j["frames"] = s.frames;
+  j["simulated_time"] = s.simulated_time;
+  j["wall_time"] = s.wall_time;
+  j["real_time_factor"] = s.wall_time > 0 ? json(s.simulated_time / s.wall_time) : json(nullptr);
+  const State& state = run.state();
+  json positions = json::array(), velocities = json::array();
+  for (Eigen::Index i = 0; i < state.x.size(); i += 2) {
+    positions.push_back({number(state.x[i]), number(state.x[i + 1])});
+    velocities.push_back({number(state.v[i]), number(state.v[i + 1])});
+  }
+  j["final_state"] = {{"t", state.t}, {"positions", positions}, {"velocities", velocities}};
+  if (run.navigation()) {
+    json contact_time = json::array();
+    for (double t : s.contact_time) contact_time.push_back(t);
+    j["navigation"] = {{"goal_reached", s.goal_reached},
+                       {"goal_time", number(s.goal_time)},
+                       {"tip_error_rms", s.tip_error_rms},
+                       {"tip_error_max", s.tip_error_max},
+                       {"actuation_force_max", s.actuation_force_max},
+                       {"actuation_force_mean", s.actuation_force_mean},
+                       {"contact_force_max", s.contact_force_max},
+                       {"min_gap", number(s.min_gap)},
+                       {"max_penetration", s.max_penetration},
+                       {"contact_time_per_node", contact_time},
+                       {"paper_contact_iterations_max", s.paper_contact_iterations_max},
+                       {"trajectory_duration", run.navigation()->trajectory->duration()}};
+  }
+  return j.dump(2) + "\n";
+}
+
+}  // namespace vascsim

@@ -1,0 +1,66 @@
+#include "sim/run/navigation.h"
+
+#include <cmath>
+
+#include "sim/contact/wall_contact.h"
+#include "sim/control/tip_magnet_module.h"
+#include "sim/control/tip_servo_module.h"
+#include "sim/env/centreline.h"
+#include "sim/rod/loads.h"
+
+namespace vascsim {
+
+std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
+  auto nav = std::make_unique<Navigation>();
+  const Environment closed = build_environment(scene.maze);
+  nav->corners = reference_centreline(closed, scene.maze, scene.path);
+  nav->entry = open_entry(closed, nav->corners, scene.rod.length, nav->environment);
+  nav->trajectory.emplace(nav->corners, scene.path.corner_radius, scene.path.speed);
+  // The rod lies straight behind the start, root first: node 0 outside the maze, the tip (last
+  // node) on the path's start, heading into the first leg.
+  scene.shape.start = nav->entry.tip - scene.rod.length * nav->entry.inward;
+  scene.shape.direction = std::atan2(nav->entry.inward.y(), nav->entry.inward.x());
+  scene.shape.initial_curvature = 0.0;
+  return nav;
+}
+
+void add_navigation_modules(const Scene& scene, Navigation& nav, Model& model) {
+  nav.contact = resolve_contact_params(scene.contact, model.rod);
+  // The feedforward accelerates the actuated nodes' mass and cancels the drag the scene models.
+  const int n = model.nodes();
+  const int actuated = std::min(scene.control.actuated_nodes, n);
+  double mass = 0.0;
+  for (int k = 0; k < actuated; ++k) mass += model.rod.mass[n - 1 - k];
+  nav.plant.mass = mass;
+  if (scene.loads.drag.enabled) {
+    for (const auto& f : model.forces)
+      if (const auto* drag = dynamic_cast<const QuadraticDragModule*>(f.get())) nav.plant.drag_coefficient = drag->coefficients()[n - 1];
+  }
+
+  switch (scene.control.mode) {
+    case ActuationMode::kForce:
+      model.forces.push_back(std::make_unique<TipServoModule>(n));
+      break;
+    case ActuationMode::kField:
+      model.forces.push_back(std::make_unique<TipServoModule>(n));
+      model.forces.push_back(std::make_unique<TipMagnetModule>(n, scene.control.magnet_moment));
+      break;
+    case ActuationMode::kKinematic:
+      break;  // the tip is a prescribed node (Controls::targets)
+  }
+  if (scene.control.disturbance.amplitude > 0.0 && scene.control.disturbance.kind == DisturbanceKind::kForce) {
+    PointLoadSpec load;
+    load.node = n - 1;
+    load.force = scene.control.disturbance.amplitude * scene.control.disturbance.direction;
+    load.profile = LoadProfile::kSine;
+    load.frequency = scene.control.disturbance.omega / (2.0 * M_PI);
+    model.forces.push_back(std::make_unique<PointLoadModule>(n, std::vector<PointLoadSpec>{load}));
+  }
+  if (scene.contact.mode == ContactMode::kImplicit) {
+    model.forces.push_back(std::make_unique<WallContactModule>(nav.environment.walls, model.rod, nav.contact));
+    if (nav.contact.friction > 0.0)
+      model.forces.push_back(std::make_unique<WallFrictionModule>(nav.environment.walls, model.rod, nav.contact));
+  }
+}
+
+}  // namespace vascsim

@@ -1,0 +1,36 @@
+// Navigation: what a maze scene adds to a plain rod run (issue 4). The environment with its
+// entry port opened, the rod placed straight behind the start so that its tip (the last node)
+// sits on the path's start, the reference trajectory, the tip controller's plant model, and the
+// force modules the scene asks for: actuation (force, kinematic or field), wall contact,
+// friction. Built once per run; immutable afterwards, like the Model.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "sim/contact/contact_params.h"
+#include "sim/control/tip_controller.h"
+#include "sim/env/entry_port.h"
+#include "sim/env/environment.h"
+#include "sim/env/trajectory.h"
+#include "sim/step/model.h"
+
+namespace vascsim {
+
+struct Navigation {
+  Environment environment;  // walls with the entry port cut open
+  EntryPort entry;
+  Polyline corners;         // sharp centreline, start to goal
+  std::optional<Trajectory> trajectory;
+  ContactParams contact;
+  TipPlant plant;
+};
+
+// Resolves the environment and path of `scene` and places the rod at the entry: overwrites
+// scene.shape (start, direction, straight). Throws InputError if start and goal do not connect.
+std::unique_ptr<Navigation> prepare_navigation(Scene& scene);
+// Adds the navigation force modules to a Model built from the prepared scene, and fills the
+// parts of `navigation` that depend on the compiled rod (contact parameters, plant model).
+void add_navigation_modules(const Scene& scene, Navigation& navigation, Model& model);
+
+}  // namespace vascsim

@@ -1,0 +1,219 @@
+#include "sim/run/run.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/contact/paper_contact.h"
+#include "sim/log/channel_names.h"
+#include "sim/step/stepper.h"
+
+namespace vascsim {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
+Run::Run(const Scene& scene, Model model, std::unique_ptr<Navigation> navigation)
+    : scene_(scene),
+      model_(std::move(model)),
+      navigation_(std::move(navigation)),
+      state_(initial_state(model_)),
+      workspace_(model_) {
+  const int n = model_.nodes();
+  if (navigation_) {
+    controller_.emplace(scene_.control, *navigation_->trajectory, navigation_->plant);
+    const double reach = navigation_->contact.g_hat;
+    const double edge = model_.rod.rest_length.maxCoeff();
+    probe_.emplace(navigation_->environment.walls, model_.rod.outer_radius, reach, 2.0 * edge);
+    if (scene_.contact.mode == ContactMode::kPaper) {
+      paper_walls_.emplace(navigation_->environment.walls, 8.0 * model_.rod.outer_radius);
+      model_.forces.push_back(std::make_unique<ExplicitWallForceModule>(n));
+    }
+    stats_.contact_time.assign(static_cast<std::size_t>(n), 0.0);
+  }
+  const std::uint32_t node_values = static_cast<std::uint32_t>(2 * n);
+  channels_.push_back({channel::kPosition, "m", ChannelLayout::kNodeVectors, node_values});
+  channels_.push_back({channel::kVelocity, "m/s", ChannelLayout::kNodeVectors, node_values});
+  for (const auto& f : model_.forces)
+    if (!contains(force_channels_, f->channel())) force_channels_.push_back(f->channel());
+  // Kinematic actuation has no force module; its reported force is the controller's estimate.
+  if (navigation_ && scene_.control.mode == ActuationMode::kKinematic && !contains(force_channels_, channel::kActuationForce))
+    force_channels_.push_back(channel::kActuationForce);
+  for (const auto& name : force_channels_) channels_.push_back({name, "N", ChannelLayout::kNodeVectors, node_values});
+  if (navigation_) {
+    channels_.push_back({channel::kTipReference, "m", ChannelLayout::kVector, 2});
+    channels_.push_back({channel::kTipError, "m", ChannelLayout::kScalars, 1});
+  }
+}
+
+Controls Run::controls_for_step(double dt) {
+  Controls controls;
+  controls.time = state_.t;
+  if (!controller_) return controls;
+  const int tip = model_.nodes() - 1;
+  const TipCommand c = controller_->command(state_.t, dt, state_.position(tip), state_.velocity(tip));
+  last_command_ = c;
+  switch (scene_.control.mode) {
+    case ActuationMode::kKinematic: {
+      Vec2 end = c.position;
+      if (scene_.control.disturbance.kind == DisturbanceKind::kPosition) end += controller_->disturbance(state_.t + dt);
+      controls.targets.push_back({tip, state_.position(tip), (end - state_.position(tip)) / dt});
+      break;
+    }
+    case ActuationMode::kField:
+      controls.field = c.field;
+      [[fallthrough]];
+    case ActuationMode::kForce: {
+      // The servo's reference moves from r(t) to r(t + dt) over the step.
+      TipServo& servo = controls.servo;
+      servo.active = true;
+      servo.first_node = model_.nodes() - std::min(scene_.control.actuated_nodes, model_.nodes());
+      servo.feedforward = c.feedforward;
+      servo.velocity = (c.reference - navigation_->trajectory->position(controller_->reference_time(state_.t))) / dt;
+      servo.position = c.reference - servo.velocity * dt;
+      servo.kp = scene_.control.kp;
+      servo.kd = scene_.control.kd;
+      break;
+    }
+  }
+  controls.wall_forces = wall_forces_;
+  return controls;
+}
+
+bool Run::advance(double dt) {
+  Controls controls = controls_for_step(dt);
+  StepReport report;
+  if (paper_walls_) {
+    // The paper's contact: re-solve the step with updated wall forces until no node is inside.
+    const State start = state_;
+    for (int k = 1;; ++k) {
+      report = step(model_, state_, workspace_, controls, dt);
+      if (!report.ok) break;
+      const PaperContactUpdate u = paper_contact_update(*paper_walls_, model_.rod.outer_radius, scene_.contact.paper_gain,
+                                                        state_.x, wall_forces_);
+      stats_.paper_contact_iterations_max = std::max(stats_.paper_contact_iterations_max, k);
+      if (u.settled || k >= scene_.contact.paper_iterations) break;
+      state_ = start;
+      controls.wall_forces = wall_forces_;
+    }
+  } else {
+    report = step(model_, state_, workspace_, controls, dt);
+  }
+  stats_.rejected_steps += report.rejected;
+  if (!report.ok) {
+    stats_.failed = true;
+    stats_.failure = report.failure;
+    return false;
+  }
+  if (!state_.x.allFinite() || !state_.v.allFinite()) {
+    stats_.failed = true;
+    stats_.failure = "the state became non-finite at t = " + std::to_string(state_.t) + " s";
+    return false;
+  }
+  ++stats_.steps;
+  stats_.newton_iterations += report.iterations;
+  stats_.newton_iterations_max = std::max(stats_.newton_iterations_max, report.iterations);
+  last_controls_ = controls;
+  update_statistics(report.dt, controls);
+  return true;
+}
+
+Eigen::VectorXd Run::channel_force(const std::string& name, const Controls& controls) const {
+  ForceContext ctx;
+  ctx.t = state_.t;
+  ctx.x = &state_.x;
+  ctx.v = &state_.v;
+  ctx.controls = &controls;
+  ctx.start = &state_;
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(model_.dofs());
+  for (const auto& m : model_.forces)
+    if (m->channel() == name) m->add(ctx, f, nullptr);
+  return f;
+}
+
+void Run::update_statistics(double dt, const Controls& controls) {
+  stats_.simulated_time = state_.t;
+  if (!navigation_) return;
+  const int n = model_.nodes();
+  const Vec2 tip = state_.position(n - 1);
+  const double error = (navigation_->trajectory->position(controller_->reference_time(state_.t)) - tip).norm();
+  stats_.tip_error_max = std::max(stats_.tip_error_max, error);
+  error_square_time_ += error * error * dt;
+  stats_.tip_error_rms = std::sqrt(error_square_time_ / std::max(state_.t, 1e-300));
+  // The magnetic force as applied at the end of the step (the servo is implicit).
+  Vec2 actuation = last_command_.force;
+  if (scene_.control.mode != ActuationMode::kKinematic)
+    actuation = channel_force(channel::kActuationForce, controls).reshaped(2, n).rowwise().sum();
+  stats_.actuation_force_max = std::max(stats_.actuation_force_max, actuation.norm());
+  actuation_time_ += actuation.norm() * dt;
+  stats_.actuation_force_mean = actuation_time_ / std::max(state_.t, 1e-300);
+  if (!stats_.goal_reached && (tip - navigation_->environment.goal).norm() <= 0.25 * navigation_->environment.lumen_width) {
+    stats_.goal_reached = true;
+    stats_.goal_time = state_.t;
+  }
+  // Contact: gaps, time in contact and the largest per-node wall force.
+  const double gap = probe_->min_gap(state_.x, navigation_->contact.g_hat);
+  stats_.min_gap = std::min(stats_.min_gap, gap);
+  stats_.max_penetration = std::max(stats_.max_penetration, -stats_.min_gap);
+  const Eigen::VectorXd wall = channel_force(channel::kContactForce, controls);
+  for (int i = 0; i < n; ++i) {
+    const double magnitude = wall.segment<2>(2 * i).norm();
+    stats_.contact_force_max = std::max(stats_.contact_force_max, magnitude);
+    if (magnitude > 0.0) stats_.contact_time[static_cast<std::size_t>(i)] += dt;
+  }
+}
+
+void Run::record(FrameSink& sink) {
+  std::vector<double> values;
+  values.reserve(channels_.size() * state_.x.size());
+  values.insert(values.end(), state_.x.data(), state_.x.data() + state_.x.size());
+  values.insert(values.end(), state_.v.data(), state_.v.data() + state_.v.size());
+  for (const auto& name : force_channels_) {
+    Eigen::VectorXd f = channel_force(name, last_controls_);
+    if (name == channel::kActuationForce && scene_.control.mode == ActuationMode::kKinematic && navigation_)
+      f.segment<2>(f.size() - 2) = last_command_.force;
+    values.insert(values.end(), f.data(), f.data() + f.size());
+  }
+  if (navigation_) {
+    const Vec2 reference = navigation_->trajectory->position(controller_->reference_time(state_.t));
+    values.push_back(reference.x());
+    values.push_back(reference.y());
+    values.push_back((reference - state_.position(model_.nodes() - 1)).norm());
+  }
+  sink.write(state_.t, values);
+  ++stats_.frames;
+}
+
+bool Run::run(FrameSink& sink, const std::function<void(double)>& progress) {
+  const auto wall_start = Clock::now();
+  const double duration = scene_.run.duration;
+  const double interval = scene_.run.output_interval;
+  const double dt = model_.solver.dt;
+  record(sink);
+  std::size_t next_frame = 1;
+  bool ok = true;
+  while (state_.t < duration * (1.0 - 1e-12)) {
+    // Steps land exactly on output times so that frames are evenly spaced.
+    const double next_output = std::min(duration, static_cast<double>(next_frame) * interval);
+    const double h = std::min(dt, next_output - state_.t);
+    if (!advance(h)) {
+      ok = false;
+      break;
+    }
+    if (state_.t >= next_output * (1.0 - 1e-12)) {
+      record(sink);
+      ++next_frame;
+      if (progress) progress(state_.t);
+    }
+  }
+  stats_.wall_time = std::chrono::duration<double>(Clock::now() - wall_start).count();
+  return ok;
+}
+
+}  // namespace vascsim

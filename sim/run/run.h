@@ -1,0 +1,100 @@
+// A run: the loop that advances a State through simulated time, sets the controller's inputs
+// before each step, records frames at the output interval and keeps the statistics that
+// summary.json reports. It owns no files: frames go to a FrameSink (the command line connects a
+// FrameLogWriter), so the loop is testable in memory and the stepper stays free of I/O.
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/contact/contact_pairs.h"
+#include "sim/log/frame_log.h"
+#include "sim/run/navigation.h"
+#include "sim/step/model.h"
+#include "sim/step/newton.h"
+
+namespace vascsim {
+
+// Receives each recorded frame: its time and the values of Run::channels() in order.
+class FrameSink {
+ public:
+  virtual ~FrameSink() = default;
+  virtual void write(double time, const std::vector<double>& values) = 0;
+};
+
+struct RunStatistics {
+  int steps = 0;
+  long long newton_iterations = 0;
+  int newton_iterations_max = 0;     // in one step
+  int rejected_steps = 0;            // attempts retried with a smaller dt
+  std::size_t frames = 0;
+  double simulated_time = 0.0;       // s
+  double wall_time = 0.0;            // s
+  bool failed = false;
+  std::string failure;
+  // Navigation scenes only.
+  bool goal_reached = false;
+  double goal_time = std::numeric_limits<double>::quiet_NaN();  // s
+  double tip_error_rms = 0.0;        // m, over all steps
+  double tip_error_max = 0.0;        // m
+  double actuation_force_max = 0.0;  // N, |magnetic force| on the tip
+  double actuation_force_mean = 0.0; // N
+  double contact_force_max = 0.0;    // N, largest per-node wall force
+  double min_gap = std::numeric_limits<double>::infinity();  // m, rod surface to wall surface
+  double max_penetration = 0.0;      // m, max(0, -min_gap)
+  std::vector<double> contact_time;  // (N), s, time each node spent touching a wall
+  int paper_contact_iterations_max = 0;
+};
+
+class Run {
+ public:
+  // `navigation` may be null (a rod in free space). The model must come from the same scene
+  // (with add_navigation_modules applied when navigating).
+  Run(const Scene& scene, Model model, std::unique_ptr<Navigation> navigation);
+
+  // Frame log channels this run records, in order.
+  const std::vector<LogChannel>& channels() const { return channels_; }
+  const Model& model() const { return model_; }
+  const State& state() const { return state_; }
+  const Navigation* navigation() const { return navigation_.get(); }
+  const RunStatistics& statistics() const { return stats_; }
+
+  // Runs until scene.run.duration (or the first failure), writing a frame at t = 0 and every
+  // output interval. `progress` (may be empty) is called after each frame with t.
+  // Returns false if the simulation failed; the statistics say why, and every frame computed
+  // before the failure has been written.
+  bool run(FrameSink& sink, const std::function<void(double t)>& progress = {});
+
+ private:
+  // The controller's inputs for the next step (remembers the command for the log).
+  Controls controls_for_step(double dt);
+  bool advance(double dt);
+  void record(FrameSink& sink);
+  void update_statistics(double dt, const Controls& controls);
+  // The force of every module writing channel `name`, at the committed state.
+  Eigen::VectorXd channel_force(const std::string& name, const Controls& controls) const;
+
+  Scene scene_;
+  Model model_;
+  std::unique_ptr<Navigation> navigation_;
+  std::optional<TipController> controller_;
+  std::optional<ContactGeometry> probe_;             // measures gaps in every contact mode
+  std::optional<WallDistanceField> paper_walls_;     // paper contact mode
+  State state_;
+  Workspace workspace_;
+  std::vector<LogChannel> channels_;
+  std::vector<std::string> force_channels_;          // distinct module channels, in log order
+  std::vector<NodeForce> wall_forces_;               // paper contact mode, carried between steps
+  TipCommand last_command_;
+  Controls last_controls_;                           // of the last committed step, for the frames
+  RunStatistics stats_;
+  double error_square_time_ = 0.0;                   // m^2 s
+  double actuation_time_ = 0.0;                      // N s
+};
+
+}  // namespace vascsim
