@@ -37,7 +37,11 @@ Environment generated_environment(const MazeSpec& spec) {
   GridMaze g = generate_maze(spec);
   const double px = g.pitch_x(), py = g.pitch_y();
   const double pitch = std::min(px, py);
-  if (!(spec.lumen_width > 0.0) || spec.lumen_width > pitch) {
+  // A lumen equal to the pitch up to rounding (e.g. width 2.4 m / 12 cols vs 0.2 m) means line walls:
+  // snap the thickness to exactly zero rather than leave +-1e-17 m, or fail on a rounding difference.
+  const double snap = 1e-9 * pitch;
+  const auto thickness = [&](double p) { return p - spec.lumen_width <= snap ? 0.0 : p - spec.lumen_width; };
+  if (!(spec.lumen_width > 0.0) || spec.lumen_width > pitch + snap) {
     std::ostringstream msg;
     msg << "/maze/lumen_width: expected a number in (0, " << pitch << "] (the cell pitch), got " << spec.lumen_width;
     throw InputError(msg.str());
@@ -53,12 +57,12 @@ Environment generated_environment(const MazeSpec& spec) {
   // column k. Lines 0 and rows are the outer boundary. Thickness differs per direction only when cells
   // are not square, so that every channel is lumen_width wide.
   add_merged_lines(
-      g.rows + 1, g.cols, py - spec.lumen_width,
+      g.rows + 1, g.cols, thickness(py),
       [&](int i, int k) { return i == 0 || i == g.rows || !g.is_open({i, k}, kNorth); },
       [&](int i, int k) { return Vec2(k * px, g.height - i * py); }, env.walls);
   // Vertical grid line j (0..cols) is the west side of column j, x = j * px; piece k spans row k.
   add_merged_lines(
-      g.cols + 1, g.rows, px - spec.lumen_width,
+      g.cols + 1, g.rows, thickness(px),
       [&](int j, int k) { return j == 0 || j == g.cols || !g.is_open({k, j}, kWest); },
       [&](int j, int k) { return Vec2(j * px, g.height - k * py); }, env.walls);
   env.grid = std::move(g);
