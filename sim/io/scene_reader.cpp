@@ -52,6 +52,22 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
     auto section = in.object("contact");
     io::read_contact(section, scene.contact);
   }
+  {
+    auto section = in.object("shape");
+    io::read_shape(section, scene.shape);
+  }
+  {
+    auto section = in.object("boundary");
+    io::read_boundary(section, scene.boundary);
+  }
+  {
+    auto section = in.object("loads");
+    io::read_loads(section, scene.loads);
+  }
+  {
+    auto section = in.object("solver");
+    io::read_solver(section, scene.solver);
+  }
   in.finish();
   return scene;
 }
@@ -75,6 +91,10 @@ std::string scene_to_json(const Scene& scene) {
   root["run"] = io::write_run(scene.run);
   root["control"] = io::write_control(scene.control);
   root["contact"] = io::write_contact(scene.contact);
+  root["shape"] = io::write_shape(scene.shape);
+  root["boundary"] = io::write_boundary(scene.boundary);
+  root["loads"] = io::write_loads(scene.loads);
+  root["solver"] = io::write_solver(scene.solver);
   return root.dump(2);
 }
 

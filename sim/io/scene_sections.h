@@ -16,6 +16,10 @@ void read_rod(FieldReader& in, RodSpec& out);
 void read_run(FieldReader& in, RunSpec& out);
 void read_control(FieldReader& in, ControlSpec& out);
 void read_contact(FieldReader& in, ContactSpec& out);
+void read_shape(FieldReader& in, ShapeSpec& out);
+void read_boundary(FieldReader& in, BoundarySpec& out);
+void read_loads(FieldReader& in, LoadSpec& out);
+void read_solver(FieldReader& in, SolverSpec& out);
 
 nlohmann::json write_maze(const MazeSpec& spec);
 nlohmann::json write_path(const PathSpec& spec);
@@ -23,6 +27,10 @@ nlohmann::json write_rod(const RodSpec& spec);
 nlohmann::json write_run(const RunSpec& spec);
 nlohmann::json write_control(const ControlSpec& spec);
 nlohmann::json write_contact(const ContactSpec& spec);
+nlohmann::json write_shape(const ShapeSpec& spec);
+nlohmann::json write_boundary(const BoundarySpec& spec);
+nlohmann::json write_loads(const LoadSpec& spec);
+nlohmann::json write_solver(const SolverSpec& spec);
 
 nlohmann::json to_json(const Vec2& p);
 

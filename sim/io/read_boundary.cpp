@@ -1,0 +1,64 @@
+#include "sim/io/scene_sections.h"
+
+namespace vascsim::io {
+
+using nlohmann::json;
+
+namespace {
+
+const char* clamp_name(ClampKind c) {
+  switch (c) {
+    case ClampKind::kFirstEdge: return "first_edge";
+    case ClampKind::kCentred: return "centred";
+    default: return "none";
+  }
+}
+
+// Node indices are checked against the rod's node count when the Model is built.
+int read_node(FieldReader& in, const std::string& key, int fallback) {
+  return static_cast<int>(in.integer(key, fallback, -1000000, 999999));
+}
+
+}  // namespace
+
+void read_boundary(FieldReader& in, BoundarySpec& out) {
+  const std::string clamp = in.choice("clamp", clamp_name(out.clamp), {"none", "first_edge", "centred"});
+  out.clamp = clamp == "first_edge" ? ClampKind::kFirstEdge : clamp == "centred" ? ClampKind::kCentred : ClampKind::kNone;
+  if (const json* pinned = in.raw("pinned")) {
+    if (!pinned->is_array()) in.fail("pinned", "an array of node indices", *pinned);
+    out.pinned.clear();
+    for (std::size_t i = 0; i < pinned->size(); ++i) {
+      const json& v = (*pinned)[i];
+      if (!v.is_number_integer() || std::abs(v.get<long long>()) > 1000000)
+        in.fail("pinned/" + std::to_string(i), "an integer node index", v);
+      out.pinned.push_back(v.get<int>());
+    }
+  }
+  if (const json* list = in.raw("prescribed")) {
+    if (!list->is_array()) in.fail("prescribed", "an array of objects", *list);
+    out.prescribed.clear();
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      FieldReader item((*list)[i], in.file(), in.pointer_of("prescribed/" + std::to_string(i)));
+      PrescribedMotionSpec p;
+      p.node = read_node(item, "node", p.node);
+      p.velocity = item.vec2("velocity", p.velocity);
+      p.amplitude = item.vec2("amplitude", p.amplitude);
+      p.frequency = item.number("frequency", p.frequency, 0.0, 1e6);
+      item.finish();
+      out.prescribed.push_back(p);
+    }
+  }
+  in.finish();
+}
+
+json write_boundary(const BoundarySpec& spec) {
+  json prescribed = json::array();
+  for (const auto& p : spec.prescribed)
+    prescribed.push_back({{"node", p.node},
+                          {"velocity", to_json(p.velocity)},
+                          {"amplitude", to_json(p.amplitude)},
+                          {"frequency", p.frequency}});
+  return {{"clamp", clamp_name(spec.clamp)}, {"pinned", spec.pinned}, {"prescribed", prescribed}};
+}
+
+}  // namespace vascsim::io

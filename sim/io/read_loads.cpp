@@ -1,0 +1,82 @@
+#include "sim/io/scene_sections.h"
+
+namespace vascsim::io {
+
+using nlohmann::json;
+
+namespace {
+
+const char* profile_name(LoadProfile p) {
+  switch (p) {
+    case LoadProfile::kRamp: return "ramp";
+    case LoadProfile::kSine: return "sine";
+    default: return "constant";
+  }
+}
+
+}  // namespace
+
+void read_loads(FieldReader& in, LoadSpec& out) {
+  {
+    FieldReader g = in.object("gravity");
+    out.gravity.enabled = g.boolean("enabled", out.gravity.enabled);
+    out.gravity.acceleration = g.vec2("acceleration", out.gravity.acceleration);
+    g.finish();
+  }
+  {
+    FieldReader d = in.object("damping");
+    out.damping.enabled = d.boolean("enabled", out.damping.enabled);
+    out.damping.coefficient = d.number("coefficient", out.damping.coefficient, 0.0, 1e9);
+    d.finish();
+  }
+  {
+    FieldReader d = in.object("drag");
+    out.drag.enabled = d.boolean("enabled", out.drag.enabled);
+    out.drag.fluid_density = d.number("fluid_density", out.drag.fluid_density, 0.0, 1e5);
+    out.drag.drag_coefficient = d.number("drag_coefficient", out.drag.drag_coefficient, 0.0, 1e3);
+    const std::string area = d.choice("area", out.drag.area == DragArea::kNodes ? "nodes" : "tip", {"nodes", "tip"});
+    out.drag.area = area == "tip" ? DragArea::kTipFrontal : DragArea::kNodes;
+    d.finish();
+  }
+  if (const json* list = in.raw("point")) {
+    if (!list->is_array()) in.fail("point", "an array of objects", *list);
+    out.point_loads.clear();
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      FieldReader item((*list)[i], in.file(), in.pointer_of("point/" + std::to_string(i)));
+      PointLoadSpec p;
+      p.node = static_cast<int>(item.integer("node", p.node, -1000000, 999999));
+      p.force = item.vec2("force", p.force);
+      p.moment = item.number("moment", p.moment, -1e9, 1e9);
+      const std::string profile = item.choice("profile", profile_name(p.profile), {"constant", "ramp", "sine"});
+      p.profile = profile == "ramp" ? LoadProfile::kRamp : profile == "sine" ? LoadProfile::kSine : LoadProfile::kConstant;
+      p.ramp_time = item.positive("ramp_time", p.ramp_time, 1e7);
+      p.frequency = item.number("frequency", p.frequency, 0.0, 1e6);
+      p.phase = item.number("phase", p.phase, -1e3, 1e3);
+      item.finish();
+      out.point_loads.push_back(p);
+    }
+  }
+  in.finish();
+}
+
+json write_loads(const LoadSpec& spec) {
+  json points = json::array();
+  for (const auto& p : spec.point_loads)
+    points.push_back({{"node", p.node},
+                      {"force", to_json(p.force)},
+                      {"moment", p.moment},
+                      {"profile", profile_name(p.profile)},
+                      {"ramp_time", p.ramp_time},
+                      {"frequency", p.frequency},
+                      {"phase", p.phase}});
+  return {{"gravity", {{"enabled", spec.gravity.enabled}, {"acceleration", to_json(spec.gravity.acceleration)}}},
+          {"damping", {{"enabled", spec.damping.enabled}, {"coefficient", spec.damping.coefficient}}},
+          {"drag",
+           {{"enabled", spec.drag.enabled},
+            {"fluid_density", spec.drag.fluid_density},
+            {"drag_coefficient", spec.drag.drag_coefficient},
+            {"area", spec.drag.area == DragArea::kNodes ? "nodes" : "tip"}}},
+          {"point", points}};
+}
+
+}  // namespace vascsim::io
