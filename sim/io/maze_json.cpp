@@ -7,6 +7,7 @@
 #include "sim/env/maze_solvers.h"
 #include "sim/env/trajectory.h"
 #include "sim/io/scene_reader.h"
+#include "sim/scene/input_error.h"
 
 namespace vascsim {
 
@@ -40,7 +41,18 @@ json grid_json(const GridMaze& grid, const std::vector<Cell>& path) {
 
 }  // namespace
 
+std::string maze_document_unlabelled(const Scene& scene);
+
 std::string maze_document(const Scene& scene) {
+  try {
+    return maze_document_unlabelled(scene);
+  } catch (const InputError& e) {
+    // The environment code knows the JSON path, not the file.
+    throw InputError((scene.file.empty() ? std::string("built-in scene") : scene.file) + ": " + e.what());
+  }
+}
+
+std::string maze_document_unlabelled(const Scene& scene) {
   const Environment env = build_environment(scene.maze);
   const GridMaze grid = env.grid ? *env.grid : grid_from_walls(scene.maze);
   const bool use_bfs = scene.maze.explicit_walls || scene.path.solver == PathSolver::kBreadthFirst;

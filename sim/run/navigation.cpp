@@ -7,13 +7,20 @@
 #include "sim/control/tip_servo_module.h"
 #include "sim/env/centreline.h"
 #include "sim/rod/loads.h"
+#include "sim/scene/input_error.h"
 
 namespace vascsim {
 
 std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
   auto nav = std::make_unique<Navigation>();
-  const Environment closed = build_environment(scene.maze);
-  nav->corners = reference_centreline(closed, scene.maze, scene.path);
+  Environment closed;
+  try {
+    closed = build_environment(scene.maze);
+    nav->corners = reference_centreline(closed, scene.maze, scene.path);
+  } catch (const InputError& e) {
+    // The environment code knows the JSON path, not the file.
+    throw InputError(scene.file + ": " + e.what());
+  }
   nav->entry = open_entry(closed, nav->corners, scene.rod.length, nav->environment);
   nav->trajectory.emplace(nav->corners, scene.path.corner_radius, scene.path.speed);
   // The rod lies straight behind the start, root first: node 0 outside the maze, the tip (last

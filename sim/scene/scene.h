@@ -169,7 +169,7 @@ struct ControlSpec {
   double kp = 4.0;               // force mode: N/m; kinematic mode: - (fraction of the error corrected)
   double kd = 0.4;               // force mode: N s/m; kinematic mode: s
   int actuated_nodes = 1;        // 1..3: force spread over this many nodes from the tip (the magnet's length)
-  double magnet_moment = 0.05;   // A m^2, field mode: tip dipole along the tip tangent
+  double magnet_moment = 1e-3;   // A m^2, field mode: tip dipole along the tip tangent (m B L / EI ~ 0.6)
   double field_strength = 0.02;  // T, field mode: |B|
   double lead_time = 0.0;        // s, the reference starts this long after the run starts
   DisturbanceSpec disturbance;

@@ -42,8 +42,22 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
   }
   const double t1 = state.t + h;
   set_targets(model, controls, t1, ws);
-  // Predictor: constant velocity.
-  ws.x = state.x + h * state.v;
+  // Predictor: constant velocity, shortened where a module needs it (a contact barrier must
+  // start Newton from a configuration with every gap open).
+  ws.dx = h * state.v;
+  for (std::size_t d = 0; d < ws.fixed.size(); ++d)
+    if (ws.fixed[d]) ws.dx[static_cast<Eigen::Index>(d)] = ws.target[static_cast<Eigen::Index>(d)] - state.x[static_cast<Eigen::Index>(d)];
+  double alpha = 1.0;
+  if (!model.forces.empty()) {
+    ForceContext ctx;
+    ctx.t = state.t;
+    ctx.x = &state.x;
+    ctx.v = &state.v;
+    ctx.controls = &controls;
+    ctx.start = &state;
+    for (const auto& f : model.forces) alpha = std::min(alpha, f->max_step_fraction(ctx, ws.dx));
+  }
+  ws.x = state.x + alpha * ws.dx;
   for (std::size_t d = 0; d < ws.fixed.size(); ++d)
     if (ws.fixed[d]) ws.x[static_cast<Eigen::Index>(d)] = ws.target[static_cast<Eigen::Index>(d)];
 
