@@ -4,6 +4,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -233,11 +234,26 @@ void Canvas::clear(Rgba c) {
   shapes_.clear();
   text_vertices_.clear();
   batches_.clear();
-  box({0, 0}, {static_cast<float>(width_), static_cast<float>(height_)}, {c.r, c.g, c.b, 1.0f});
+  fill_rect({0, 0}, {static_cast<float>(width_), static_cast<float>(height_)}, c);
+}
+
+void Canvas::fill_rect(glm::vec2 min, glm::vec2 max, Rgba colour) {
+  const int x0 = std::max(0, static_cast<int>(std::lround(min.x))), y0 = std::max(0, static_cast<int>(std::lround(min.y)));
+  const int x1 = std::min(width_, static_cast<int>(std::lround(max.x)));
+  const int y1 = std::min(height_, static_cast<int>(std::lround(max.y)));
+  if (x1 <= x0 || y1 <= y0) return;
+  Batch b = Batch::of(false, 0, 0);
+  b.fill = true;
+  b.rect[0] = x0;
+  b.rect[1] = y0;  // pixel rows map to GL rows one to one (see GlContext::read_pixels)
+  b.rect[2] = x1 - x0;
+  b.rect[3] = y1 - y0;
+  b.colour = colour;
+  batches_.push_back(b);
 }
 
 void Canvas::push_shape(const Shape& s) {
-  if (batches_.empty() || batches_.back().text) batches_.push_back({false, 0, shapes_.size(), 0});
+  if (batches_.empty() || batches_.back().text || batches_.back().fill) batches_.push_back(Batch::of(false, 0, shapes_.size()));
   shapes_.push_back(s);
   ++batches_.back().count;
 }
@@ -341,8 +357,8 @@ void Canvas::text(const std::string& utf8, glm::vec2 pos, int pixel_height, Rgba
     x += shift;
     return glm::vec2(pos.x + x * c + y * s, pos.y - x * s + y * c);
   };
-  if (batches_.empty() || !batches_.back().text || batches_.back().font_size != pixel_height)
-    batches_.push_back({true, pixel_height, text_vertices_.size(), 0});
+  if (batches_.empty() || !batches_.back().text || batches_.back().fill || batches_.back().font_size != pixel_height)
+    batches_.push_back(Batch::of(true, pixel_height, text_vertices_.size()));
   const glm::vec4 col = to_vec4(colour);
   for (const auto& q : quads) {
     const TextVertex v00{place(q.x0, q.y0), {q.s0, q.t0}, col}, v10{place(q.x1, q.y0), {q.s1, q.t0}, col};
@@ -372,6 +388,14 @@ void Canvas::finish(std::uint8_t* rgba) {
 
   const auto stride = static_cast<GLsizei>(sizeof(Shape));
   for (const auto& b : batches_) {
+    if (b.fill) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(b.rect[0], b.rect[1], b.rect[2], b.rect[3]);
+      glClearColor(b.colour.r, b.colour.g, b.colour.b, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      glDisable(GL_SCISSOR_TEST);
+      continue;
+    }
     if (b.count == 0) continue;
     if (b.text) {
       glUseProgram(text_program_);

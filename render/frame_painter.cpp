@@ -119,7 +119,7 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
   // Lumen: the environment's extent, so the walls read as the boundary of a channel.
   const glm::vec2 b0 = apply(m, meta_.bounds.min), b1 = apply(m, meta_.bounds.max);
   if ((meta_.bounds.max - meta_.bounds.min).minCoeff() > 0)
-    c.box(glm::min(b0, b1), glm::max(b0, b1), kLumen);
+    c.fill_rect(glm::min(b0, b1), glm::max(b0, b1), kLumen);
   const float min_wall = std::max(2.0f, h / 300.0f);
   for (const auto& w : meta_.walls)
     c.capsule(apply(m, w.a), apply(m, w.b), 0.5f * std::max(min_wall, static_cast<float>(w.thickness) * s), kWall);
@@ -177,8 +177,8 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     x0 = map_x1_;
     x1 = W;
     y0 = 0;
-    c.box({x0, 0}, {W, H}, kPanel);
-    c.box({x0, 0}, {x0 + 1.0f, H}, kPanelEdge);
+    c.fill_rect({x0, 0}, {W, H}, kPanel);
+    c.fill_rect({x0, 0}, {x0 + 1.0f, H}, kPanelEdge);
   } else {
     // Narrow frames: a compact translucent card over the map's top-left corner.
     x0 = 0.5f * pad;

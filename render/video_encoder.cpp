@@ -119,7 +119,7 @@ VideoEncoder::VideoEncoder(const std::string& path, const VideoSettings& setting
   c->color_range = AVCOL_RANGE_MPEG;
   if (m.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   if (m.codec_name == "h264") {
-    av_opt_set(c->priv_data, "preset", "veryfast", 0);
+    av_opt_set(c->priv_data, "preset", "superfast", 0);
     av_opt_set(c->priv_data, "crf", std::to_string(settings.crf).c_str(), 0);
   } else {
     av_opt_set(c->priv_data, "deadline", "realtime", 0);
