@@ -21,6 +21,8 @@ int run_bench_command(int argc, char** argv);
 int run_render_command(int argc, char** argv);
 int run_diff_command(int argc, char** argv);
 int run_bench_render(int argc, char** argv);
+int run_bench_speed(int argc, char** argv);
+int run_bench_accuracy(int argc, char** argv);
 #endif
 
 }  // namespace vascsim::cli

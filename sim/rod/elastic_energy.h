@@ -67,16 +67,17 @@ inline double discrete_curvature(const Vec2& x0, const Vec2& x1, const Vec2& x2)
 inline BendElement bend_energy(const Vec2& x0, const Vec2& x1, const Vec2& x2, double ei, double voronoi_length,
                                double rest_kappa) {
   const Vec2 e1 = x1 - x0, e2 = x2 - x1;
+  const double r1 = e1.squaredNorm(), r2 = e2.squaredNorm();
+  // 2 tan(phi/2) = 2 sin(phi) / (1 + cos(phi)) = 2 (e1 x e2) / (|e1||e2| + e1 . e2): no atan2
+  // or tan in the hot loop (the same value as discrete_curvature(), to round-off).
   const double cross = e1.x() * e2.y() - e1.y() * e2.x();
-  const double phi = std::atan2(cross, e1.dot(e2));
-  const double kappa = 2.0 * std::tan(0.5 * phi);
+  const double kappa = 2.0 * cross / (std::sqrt(r1 * r2) + e1.dot(e2));
   const double k1 = 1.0 + 0.25 * kappa * kappa;
   const double c = ei / voronoi_length;
   const double dk = kappa - rest_kappa;
   const double dE = c * dk * k1;
   const double d2E = c * (k1 * k1 + dk * k1 * 0.5 * kappa);
 
-  const double r1 = e1.squaredNorm(), r2 = e2.squaredNorm();
   const Vec2 g1 = Vec2(e1.y(), -e1.x()) / r1;  // dphi/de1 = -dtheta(e1)/de1
   const Vec2 g2 = Vec2(-e2.y(), e2.x()) / r2;  // dphi/de2 = dtheta(e2)/de2
   Eigen::Matrix<double, 6, 1> gphi;

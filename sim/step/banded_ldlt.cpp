@@ -6,7 +6,9 @@ namespace vascsim {
 
 // Row-oriented (Doolittle) LDL^T: for row i and j = i-5 .. i,
 //   s = A(i,j) - sum_{k<j} L(i,k) D(k) L(j,k),  L(i,j) = s / D(j) (j < i),  D(i) = s (j = i),
-// where k runs over the band of both rows. w_k = L(i,k) D(k) is kept to save a multiply.
+// where k runs over the band of both rows. w_m = L(i,i-m) D(i-m) is kept to save a multiply,
+// and the diagonal stores 1/D so that neither factor nor solve divides in the inner loops.
+// Rows i >= 5 have the full band and take the unrolled path (constant loop bounds).
 LdltResult banded_ldlt_factor(BandedMatrix& a, double pivot_tol) {
   constexpr int W = BandedMatrix::kWidth;
   constexpr int K = BandedMatrix::kHalfBandwidth;
@@ -15,25 +17,36 @@ LdltResult banded_ldlt_factor(BandedMatrix& a, double pivot_tol) {
   LdltResult result;
   for (int i = 0; i < n; ++i) {
     double* row = band + static_cast<std::size_t>(i) * W;  // row[m] = A(i, i-m)
-    const int j0 = i - K < 0 ? 0 : i - K;
-    double w[W];  // w[m] = L(i, i-m) * D(i-m)
-    for (int j = j0; j < i; ++j) {
-      const double* rowj = band + static_cast<std::size_t>(j) * W;
-      double s = row[i - j];
-      for (int k = j0; k < j; ++k) s -= w[i - k] * rowj[j - k];
-      const double d = rowj[0];
-      w[i - j] = s;
-      row[i - j] = s / d;
+    const int mmax = i < K ? i : K;                         // columns i-mmax .. i-1 are in the band
+    double w[W] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double diag;
+    if (mmax == K) {
+      for (int m = K; m >= 1; --m) {
+        const double* rowj = row - static_cast<std::ptrdiff_t>(m) * W;  // row i-m
+        double s = row[m];
+        for (int mk = K; mk > m; --mk) s -= w[mk] * rowj[mk - m];
+        w[m] = s;
+        row[m] = s * rowj[0];
+      }
+      diag = row[0];
+      for (int m = 1; m <= K; ++m) diag -= w[m] * row[m];
+    } else {
+      for (int m = mmax; m >= 1; --m) {
+        const double* rowj = row - static_cast<std::ptrdiff_t>(m) * W;
+        double s = row[m];
+        for (int mk = mmax; mk > m; --mk) s -= w[mk] * rowj[mk - m];
+        w[m] = s;
+        row[m] = s * rowj[0];
+      }
+      diag = row[0];
+      for (int m = 1; m <= mmax; ++m) diag -= w[m] * row[m];
     }
-    const double diag = row[0];
-    double s = diag;
-    for (int k = j0; k < i; ++k) s -= w[i - k] * row[i - k];
-    if (!std::isfinite(s) || std::abs(s) <= pivot_tol * std::abs(diag) || s == 0.0) {
+    if (!std::isfinite(diag) || diag == 0.0 || std::abs(diag) <= pivot_tol * std::abs(row[0])) {
       result.failed_row = i;
       return result;
     }
-    if (s < 0.0) ++result.negative_pivots;
-    row[0] = s;
+    if (diag < 0.0) ++result.negative_pivots;
+    row[0] = 1.0 / diag;
   }
   result.ok = true;
   return result;
@@ -51,8 +64,8 @@ void banded_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b) {
     for (int m = 1; m <= K && i - m >= 0; ++m) s -= row[m] * b[i - m];
     b[i] = s;
   }
-  // D z = y
-  for (int i = 0; i < n; ++i) b[i] /= band[static_cast<std::size_t>(i) * W];
+  // D z = y (the diagonal holds 1/D)
+  for (int i = 0; i < n; ++i) b[i] *= band[static_cast<std::size_t>(i) * W];
   // L^T x = z
   for (int i = n - 1; i >= 0; --i) {
     const double xi = b[i];

@@ -24,7 +24,7 @@ struct LdltResult {
   int negative_pivots = 0;
 };
 
-// Overwrites `a` with L (strictly lower band, unit diagonal implied) and D (on the diagonal).
+// Overwrites `a` with L (strictly lower band, unit diagonal implied) and 1/D (on the diagonal).
 // A pivot counts as vanished when |d_i| <= pivot_tol * |A(i,i)|.
 LdltResult banded_ldlt_factor(BandedMatrix& a, double pivot_tol = 1e-13);
 // Solves (L D L^T) x = b in place, given a factor from banded_ldlt_factor.

@@ -1,0 +1,127 @@
+// vascsim bench speed: cost of the rod core. For N from 10 to 100000: one Newton iteration
+// (assembly of residual and banded Jacobian + LDL^T factorisation + solve), per iteration and per
+// node, to show the linear scaling; and full backward Euler steps of the paper's rod (Table I,
+// 0.5 m, dt = 1e-3, free motion under a small tip force), in steps per second, for the issue 3
+// targets (>= 60000 steps/s at N = 50, >= 15000 at N = 200). Prints numbers; asserts nothing.
+#include <chrono>
+#include <cstdio>
+
+#include "apps/vascsim/cli_args.h"
+#include "apps/vascsim/commands.h"
+#include "sim/step/banded_ldlt.h"
+#include "sim/step/model.h"
+#include "sim/step/newton.h"
+#include "sim/step/stepper.h"
+
+namespace vascsim::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+Scene paper_rod(int nodes, Scheme scheme) {
+  Scene scene;
+  scene.has_maze = false;
+  scene.rod.nodes = nodes;
+  scene.solver.scheme = scheme;
+  scene.solver.dt = 1e-3;
+  scene.solver.rel_tol = 1e-6;
+  PointLoadSpec tip;
+  tip.force = Vec2(0.0, 1e-4);  // N, small: the tip swings a few centimetres in 1 s
+  scene.loads.point_loads.push_back(tip);
+  return scene;
+}
+
+// Seconds per Newton iteration, repeated for at least `budget` seconds.
+double time_iteration(int nodes, double budget) {
+  Scene scene = paper_rod(nodes, Scheme::kBackwardEuler);
+  scene.shape.initial_curvature = 2.0;  // bent: every element does real work
+  const Model model = build_model(scene);
+  const State state = initial_state(model);
+  Workspace ws(model);
+  ws.x_hat = state.x;
+  ws.v_hat = state.v;
+  ws.x = state.x;
+  NewtonProblem p;
+  p.c = 1.0 / model.solver.dt;
+  long long reps = 0;
+  const auto start = Clock::now();
+  double elapsed = 0.0;
+  do {
+    for (int k = 0; k < 10; ++k) {
+      assemble(model, p, ws.x, ws, true);
+      banded_ldlt_factor(ws.jacobian);
+      ws.dx = -ws.residual;
+      banded_ldlt_solve(ws.jacobian, ws.dx);
+    }
+    reps += 10;
+    elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  } while (elapsed < budget);
+  return elapsed / static_cast<double>(reps);
+}
+
+struct StepTiming {
+  double steps_per_second = 0.0;
+  double iterations_per_step = 0.0;
+  bool ok = true;
+};
+
+StepTiming time_steps(int nodes, Scheme scheme, double simulated) {
+  const Model model = build_model(paper_rod(nodes, scheme));
+  State state = initial_state(model);
+  Workspace ws(model);
+  const Controls controls;
+  const int steps = static_cast<int>(simulated / model.solver.dt + 0.5);
+  long long iterations = 0;
+  StepTiming t;
+  const auto start = Clock::now();
+  for (int i = 0; i < steps; ++i) {
+    const StepReport r = step(model, state, ws, controls, model.solver.dt);
+    if (!r.ok) {
+      t.ok = false;
+      break;
+    }
+    iterations += r.total_iterations;
+  }
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  t.steps_per_second = steps / elapsed;
+  t.iterations_per_step = static_cast<double>(iterations) / steps;
+  return t;
+}
+
+}  // namespace
+
+int run_bench_speed(int argc, char** argv) {
+  const std::vector<OptionSpec> options = {
+      {"max-nodes", "N", "largest N of the iteration sweep (default 100000)"},
+      {"seconds", "T", "simulated time of the step benchmark (default 10)"},
+      {"help", "", "this text"},
+  };
+  const Args args(argc, argv, 3, options);
+  if (args.flag("help")) {
+    std::printf("usage: vascsim bench speed [options]\n\n%s", format_options(options).c_str());
+    return 0;
+  }
+  const long long max_nodes = args.integer("max-nodes", 100000, 10, 10000000);
+  const double seconds = args.number("seconds", 10.0, 0.001, 1e4);
+
+  std::printf("Newton iteration (assembly + banded LDL^T + solve), paper rod, bent\n");
+  std::printf("%10s %14s %14s\n", "N", "us/iteration", "ns/node");
+  for (long long n : {10LL, 30LL, 100LL, 300LL, 1000LL, 3000LL, 10000LL, 30000LL, 100000LL, 300000LL, 1000000LL}) {
+    if (n > max_nodes) break;
+    const double t = time_iteration(static_cast<int>(n), 0.3);
+    std::printf("%10lld %14.3f %14.1f\n", n, t * 1e6, t * 1e9 / static_cast<double>(n));
+  }
+  std::printf("\nPaper rod, free motion under a 1e-4 N tip force, dt = 1e-3 s, %.3g s simulated\n", seconds);
+  std::printf("%10s %8s %14s %16s %12s\n", "scheme", "N", "steps/s", "iterations/step", "x real time");
+  for (Scheme scheme : {Scheme::kBackwardEuler, Scheme::kBdf2}) {
+    for (int n : {50, 200, 1000}) {
+      const StepTiming t = time_steps(n, scheme, seconds);
+      std::printf("%10s %8d %14.0f %16.2f %12.1f%s\n", scheme == Scheme::kBdf2 ? "bdf2" : "backward_euler", n,
+                  t.steps_per_second, t.iterations_per_step, t.steps_per_second * 1e-3, t.ok ? "" : "  (a step failed)");
+    }
+  }
+  return 0;
+}
+
+}  // namespace vascsim::cli
