@@ -36,7 +36,7 @@ ContactGeometry::ContactGeometry(const std::vector<WallSegment>& walls, double r
       corner_field_(corners_, 4.0 * (rod_radius + reach) + max_edge_length) {}
 
 void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
-                                    const std::function<void(const ContactPair&)>& visit) const {
+                                    const std::function<void(const ContactPair&)>& visit, bool nodes_only) const {
   const int nodes = static_cast<int>(x.size() / 2);
   std::vector<WallHit> hits;
   ContactPair pair;
@@ -53,6 +53,7 @@ void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
       if (pair.gap < reach_) visit(pair);
     }
   }
+  if (nodes_only) return;
   for (int i = 0; i + 1 < nodes; ++i) {
     const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
     const double half = 0.5 * (b - a).norm();

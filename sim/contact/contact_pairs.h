@@ -31,7 +31,9 @@ class ContactGeometry {
 
   // Calls `visit` for every pair with gap < reach at positions x (2N). With `with_hessian` false
   // the pair's Hessian is not computed.
-  void for_each_pair(const Eigen::VectorXd& x, bool with_hessian, const std::function<void(const ContactPair&)>& visit) const;
+  // `nodes_only` skips the corner-edge pairs (friction acts on node pairs only).
+  void for_each_pair(const Eigen::VectorXd& x, bool with_hessian, const std::function<void(const ContactPair&)>& visit,
+                     bool nodes_only = false) const;
   // The smallest gap of any node or edge against any wall within `search` (m) of it, or +inf.
   double min_gap(const Eigen::VectorXd& x, double search) const;
   // Largest fraction of the move x -> x + dx that keeps every gap positive, shrunk by `safety`

@@ -71,7 +71,6 @@ void WallFrictionModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd
   if (!ctx.start || ctx.dv_dx == 0.0) return;  // friction needs motion: none in statics
   const double eps = params_.slip_velocity;
   geometry_.for_each_pair(ctx.start->x, false, [&](const ContactPair& pair) {
-    if (pair.is_edge) return;
     const double lambda = -contact_barrier(pair.gap, params_.g_hat, params_.kappa).first;  // N
     if (lambda <= 0.0) return;
     const Eigen::Vector2d tangent(-pair.normal.y(), pair.normal.x());
@@ -84,7 +83,7 @@ void WallFrictionModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd
       const double slope = scale * (2.0 - 2.0 * y) / eps;  // d|F|/d|v_t|
       stiffness->add_block<2>(pair.first_dof, Eigen::Matrix2d(slope * ctx.dv_dx * tangent * tangent.transpose()));
     }
-  });
+  }, /*nodes_only=*/true);
 }
 
 }  // namespace vascsim

@@ -158,9 +158,12 @@ void Run::update_statistics(double dt, const Controls& controls) {
     stats_.goal_time = state_.t;
   }
   // Contact: gaps, time in contact and the largest per-node wall force.
-  const double gap = probe_->min_gap(state_.x, navigation_->contact.g_hat);
+  // Gaps beyond the barrier's reach are not contact: only pairs within it are visited.
+  double gap = std::numeric_limits<double>::infinity();
+  probe_->for_each_pair(state_.x, false, [&](const ContactPair& pair) { gap = std::min(gap, pair.gap); });
   stats_.min_gap = std::min(stats_.min_gap, gap);
   stats_.max_penetration = std::max(stats_.max_penetration, -stats_.min_gap);
+  if (!std::isfinite(gap) && !paper_walls_) return;  // touching nothing: no wall force
   const Eigen::VectorXd wall = channel_force(channel::kContactForce, controls);
   for (int i = 0; i < n; ++i) {
     const double magnitude = wall.segment<2>(2 * i).norm();
