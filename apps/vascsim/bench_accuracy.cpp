@@ -1,0 +1,207 @@
+// vascsim bench accuracy: the speed-accuracy trade of the rod core, measured on reference
+// problems with known answers, over time step, node count, Newton tolerance and scheme.
+//   dynamic: the paper's rod as a cantilever (centred clamp) under a suddenly applied small tip
+//     load (alpha = P L^2/EI = 0.01, linear regime). Euler-Bernoulli modal superposition gives
+//     y_tip(t) = sum_n 4 P L^3 / (EI (beta_n L)^4) (1 - cos w_n t) (refs REFERENCES.md sections
+//     1 and 2; mode shapes normalised so that the integral of phi^2 is L and |phi(L)| = 2).
+//     Error: the largest |y_tip - exact| over t = 0.1, 0.2, .. T, relative to P L^3 / (3 EI).
+//   static: the elastica at alpha = 1 (refs section 1 table) against N.
+// Prints a table and the Pareto front (no faster run is more accurate), writes all rows as CSV.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "apps/vascsim/cli_args.h"
+#include "apps/vascsim/commands.h"
+#include "sim/scene/input_error.h"
+#include "sim/step/model.h"
+#include "sim/step/statics.h"
+#include "sim/step/stepper.h"
+
+namespace vascsim::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Row {
+  std::string problem;
+  std::string scheme;
+  double dt = 0.0;
+  int nodes = 0;
+  double rel_tol = 0.0;
+  double error = 0.0;       // relative
+  double wall_time = 0.0;   // s
+  double iterations = 0.0;  // Newton iterations per step (or in total for statics)
+  bool ok = true;
+};
+
+// Roots of cos x cosh x = -1 (clamped-free); beyond the fourth, (2n - 1) pi / 2 to double precision.
+double beta_l(int n) {
+  static const double first[4] = {1.8751040687119611, 4.6940911329741745, 7.8547574382376126, 10.995540734875467};
+  return n < 4 ? first[n] : (2 * n + 1) * M_PI / 2;
+}
+
+Scene cantilever(int nodes, Scheme scheme, double dt, double rel_tol, double p) {
+  Scene s;
+  s.has_maze = false;
+  s.rod.nodes = nodes;
+  s.boundary.clamp = ClampKind::kCentred;
+  s.solver.scheme = scheme;
+  s.solver.dt = dt;
+  s.solver.rel_tol = rel_tol;
+  PointLoadSpec tip;
+  tip.force = Vec2(0.0, -p);
+  s.loads.point_loads.push_back(tip);
+  return s;
+}
+
+Row dynamic_row(int nodes, Scheme scheme, double dt, double rel_tol, double duration) {
+  const RodSpec rod;
+  const double ro2 = rod.outer_radius * rod.outer_radius, ri2 = rod.inner_radius * rod.inner_radius;
+  const double ei = rod.youngs_modulus * M_PI * (ro2 * ro2 - ri2 * ri2) / 4, l = rod.length;
+  const double rho_a = rod.density * M_PI * (ro2 - ri2);
+  const double p = 0.01 * ei / (l * l);
+  const double y_static = p * l * l * l / (3 * ei);
+  auto exact = [&](double t) {
+    double y = 0.0;
+    for (int n = 0; n < 40; ++n) {
+      const double b = beta_l(n);
+      const double w = b * b * std::sqrt(ei / (rho_a * std::pow(l, 4)));
+      y += 4 * p * l * l * l / (ei * std::pow(b, 4)) * (1 - std::cos(w * t));
+    }
+    return -y;
+  };
+  Row row;
+  row.problem = "cantilever_step_load";
+  row.scheme = scheme == Scheme::kBdf2 ? "bdf2" : "backward_euler";
+  row.dt = dt;
+  row.nodes = nodes;
+  row.rel_tol = rel_tol;
+  const Model model = build_model(cantilever(nodes, scheme, dt, rel_tol, p));
+  State state = initial_state(model);
+  Workspace ws(model);
+  const Controls controls;
+  const int steps = static_cast<int>(std::lround(duration / dt));
+  const int sample = std::max(1, static_cast<int>(std::lround(0.1 / dt)));
+  long long iterations = 0;
+  const auto start = Clock::now();
+  for (int i = 1; i <= steps; ++i) {
+    const StepReport r = step(model, state, ws, controls, dt);
+    iterations += r.total_iterations;
+    if (!r.ok) {
+      row.ok = false;
+      break;
+    }
+    if (i % sample == 0)
+      row.error = std::max(row.error, std::abs(state.x[2 * nodes - 1] - exact(state.t)) / y_static);
+  }
+  row.wall_time = std::chrono::duration<double>(Clock::now() - start).count();
+  row.iterations = static_cast<double>(iterations) / steps;
+  return row;
+}
+
+Row static_row(int nodes, double rel_tol) {
+  Row row;
+  row.problem = "elastica_alpha_1";
+  row.scheme = "static";
+  row.nodes = nodes;
+  row.rel_tol = rel_tol;
+  const RodSpec rod;
+  const double ro2 = rod.outer_radius * rod.outer_radius, ri2 = rod.inner_radius * rod.inner_radius;
+  const double ei = rod.youngs_modulus * M_PI * (ro2 * ro2 - ri2 * ri2) / 4, l = rod.length;
+  Scene scene = cantilever(nodes, Scheme::kBackwardEuler, 1e-3, rel_tol, ei / (l * l));
+  scene.solver.mode = SolveMode::kStatic;
+  const Model model = build_model(scene);
+  State state = initial_state(model);
+  Workspace ws(model);
+  const auto start = Clock::now();
+  const StaticReport r = solve_static(model, state, ws, Controls{});
+  row.wall_time = std::chrono::duration<double>(Clock::now() - start).count();
+  row.ok = r.ok;
+  row.iterations = r.iterations;
+  row.error = std::abs(-state.x[2 * nodes - 1] / l - 0.30172077) / 0.30172077;
+  return row;
+}
+
+void print_row(const Row& r) {
+  std::printf("%-22s %-15s %9.2e %6d %8.0e %11.3e %11.4f %8.2f%s\n", r.problem.c_str(), r.scheme.c_str(), r.dt, r.nodes,
+              r.rel_tol, r.error, r.wall_time, r.iterations, r.ok ? "" : "  FAILED");
+}
+
+void print_header() {
+  std::printf("%-22s %-15s %9s %6s %8s %11s %11s %8s\n", "problem", "scheme", "dt [s]", "N", "rel_tol", "error",
+              "wall [s]", "iter");
+}
+
+}  // namespace
+
+int run_bench_accuracy(int argc, char** argv) {
+  const std::vector<OptionSpec> options = {
+      {"csv", "FILE", "write every row as CSV (default accuracy.csv)"},
+      {"duration", "T", "simulated time of the dynamic problem, s (default 10: one period of mode 1)"},
+      {"quick", "", "a small sweep (for tests)"},
+      {"help", "", "this text"},
+  };
+  const Args args(argc, argv, 3, options);
+  if (args.flag("help")) {
+    std::printf("usage: vascsim bench accuracy [options]\n\n%s", format_options(options).c_str());
+    return 0;
+  }
+  const std::string csv = args.value("csv").value_or("accuracy.csv");
+  const double duration = args.number("duration", 10.0, 0.1, 1e3);
+  const bool quick = args.flag("quick");
+
+  std::vector<Row> rows;
+  std::vector<double> dts = {1e-2, 4e-3, 1e-3, 2.5e-4};
+  std::vector<int> node_counts = {21, 41, 81};
+  std::vector<double> tols = {1e-4, 1e-6, 1e-9};
+  if (quick) {
+    dts = {1e-2, 4e-3};
+    node_counts = {21};
+    tols = {1e-6};
+  }
+  print_header();
+  for (Scheme scheme : {Scheme::kBackwardEuler, Scheme::kBdf2})
+    for (int n : node_counts)
+      for (double dt : dts)
+        for (double tol : tols) {
+          rows.push_back(dynamic_row(n, scheme, dt, tol, quick ? 0.5 : duration));
+          print_row(rows.back());
+        }
+  for (int n : quick ? std::vector<int>{11, 21} : std::vector<int>{11, 21, 41, 81, 161}) {
+    rows.push_back(static_row(n, 1e-10));
+    print_row(rows.back());
+  }
+
+  // Pareto front of the dynamic problem: sorted by wall time, keep a run only if it is more
+  // accurate than every faster one.
+  std::vector<Row> dynamic;
+  for (const auto& r : rows)
+    if (r.problem == "cantilever_step_load" && r.ok) dynamic.push_back(r);
+  std::sort(dynamic.begin(), dynamic.end(), [](const Row& a, const Row& b) { return a.wall_time < b.wall_time; });
+  std::printf("\nPareto front (cantilever_step_load):\n");
+  print_header();
+  double best = INFINITY;
+  for (const auto& r : dynamic)
+    if (r.error < best) {
+      best = r.error;
+      print_row(r);
+    }
+
+  std::ofstream out(csv);
+  if (!out) throw InputError(csv + ": cannot write CSV");
+  out << "problem,scheme,dt,nodes,rel_tol,error,wall_time,iterations,ok\n";
+  char line[300];
+  for (const auto& r : rows) {
+    std::snprintf(line, sizeof line, "%s,%s,%.6g,%d,%.3g,%.6e,%.6e,%.4g,%d\n", r.problem.c_str(), r.scheme.c_str(),
+                  r.dt, r.nodes, r.rel_tol, r.error, r.wall_time, r.iterations, r.ok ? 1 : 0);
+    out << line;
+  }
+  std::printf("\nwrote %s\n", csv.c_str());
+  return 0;
+}
+
+}  // namespace vascsim::cli
