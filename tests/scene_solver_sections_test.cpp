@@ -11,8 +11,8 @@ namespace {
 
 TEST(SolverSections, PresetThenExplicitOverride) {
   const Scene s = read_scene_text(R"({"maze": null, "solver": {"preset": "fast", "rel_tol": 1e-7}})", "t.json");
-  EXPECT_EQ(s.solver.scheme, Scheme::kBackwardEuler);
-  EXPECT_EQ(s.solver.dt, 2e-3);
+  EXPECT_EQ(s.solver.scheme, Scheme::kBdf2);
+  EXPECT_EQ(s.solver.dt, 4e-3);
   EXPECT_EQ(s.solver.rel_tol, 1e-7);
   EXPECT_TRUE(s.solver.adaptive);
 }

@@ -141,9 +141,9 @@ struct SolverSpec {
 };
 // The named presets (docs/accuracy.md); returns false for an unknown name.
 inline bool apply_solver_preset(const std::string& name, SolverSpec& s) {
-  if (name == "fast") { s.scheme = Scheme::kBackwardEuler; s.dt = 2e-3; s.rel_tol = 1e-4; }
+  if (name == "fast") { s.scheme = Scheme::kBdf2; s.dt = 4e-3; s.rel_tol = 1e-4; }
   else if (name == "balanced") { s.scheme = Scheme::kBdf2; s.dt = 1e-3; s.rel_tol = 1e-6; }
-  else if (name == "accurate") { s.scheme = Scheme::kBdf2; s.dt = 2.5e-4; s.rel_tol = 1e-9; }
+  else if (name == "accurate") { s.scheme = Scheme::kBdf2; s.dt = 2.5e-4; s.rel_tol = 1e-8; }
   else return false;
   s.preset = name;
   return true;
