@@ -19,6 +19,7 @@ const std::vector<Benchmark>& benchmarks() {
   static const std::vector<Benchmark> table = {
       {"speed", "rod core: time per Newton iteration and per step, N = 10 .. 100000", run_bench_speed},
       {"accuracy", "rod core: error against wall time over dt, N, tolerance and scheme (CSV)", run_bench_accuracy},
+      {"traversal", "full maze traversal: wall time and real-time factor per preset", run_bench_traversal},
 #ifdef VASCSIM_HAVE_RENDER
       {"render", "renderer frames/s at 720p and 1080p, MP4 and PNG", run_bench_render},
 #endif

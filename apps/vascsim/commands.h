@@ -17,6 +17,7 @@ const std::vector<Command>& commands();
 int run_maze_command(int argc, char** argv);
 int run_run_command(int argc, char** argv);
 int run_bench_command(int argc, char** argv);
+int run_bench_traversal(int argc, char** argv);
 #ifdef VASCSIM_HAVE_RENDER
 int run_render_command(int argc, char** argv);
 int run_diff_command(int argc, char** argv);
