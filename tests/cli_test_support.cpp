@@ -12,8 +12,10 @@
 
 namespace vascsim::test {
 
-CommandResult run_vascsim(const std::string& arguments) {
-  const std::string command = std::string(VASCSIM_EXE) + " " + arguments + " 2>&1";
+namespace {
+
+CommandResult run_vascsim_via(const std::string& command_line) {
+  const std::string command = command_line + " 2>&1";
   CommandResult result;
   std::FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) throw std::runtime_error("popen failed for " + command);
@@ -23,6 +25,17 @@ CommandResult run_vascsim(const std::string& arguments) {
   const int status = ::pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return result;
+}
+
+}  // namespace
+
+CommandResult run_vascsim(const std::string& arguments) {
+  return run_vascsim_via(std::string(VASCSIM_EXE) + " " + arguments);
+}
+
+CommandResult run_vascsim_killed_after(const std::string& arguments, double seconds) {
+  // coreutils timeout sends the signal to the command itself, as a user's kill -9 would.
+  return run_vascsim_via("timeout -s KILL " + std::to_string(seconds) + " " + std::string(VASCSIM_EXE) + " " + arguments);
 }
 
 std::string fresh_temp_dir(const std::string& name) {

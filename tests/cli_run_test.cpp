@@ -1,0 +1,81 @@
+// `vascsim run` as a user drives it: outputs, refusal to overwrite, bad scenes, a diverging run
+// that keeps its frames and says why, and a killed run that leaves a readable log.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "sim/log/frame_log.h"
+#include "tests/cli_test_support.h"
+
+namespace vascsim::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kShortMaze = R"({"name": "short", "maze": {"seed": 4}, "rod": {"nodes": 12},
+                             "path": {"speed": 0.2}, "run": {"duration": 0.5, "output_interval": 0.05}})";
+
+TEST(CliRun, WritesLogAndSummaryAndRefusesToReuseADirectory) {
+  const std::string dir = fresh_temp_dir("run_ok");
+  write_text(dir + "/scene.json", kShortMaze);
+  CommandResult r = run_vascsim("run " + dir + "/scene.json --out " + dir + "/out --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  FrameLogReader log(dir + "/out/frames.vlog");
+  EXPECT_EQ(log.frame_count(), 11u);  // t = 0, 0.05, ..., 0.5
+  EXPECT_GE(log.header().find_channel("force/contact"), 0);
+  EXPECT_GE(log.header().find_channel("tip/error"), 0);
+  const std::string summary = read_text(dir + "/out/summary.json");
+  EXPECT_NE(summary.find("\"ok\": true"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"goal_reached\""), std::string::npos);
+  // A second run into the same directory must not replace it silently.
+  r = run_vascsim("run " + dir + "/scene.json --out " + dir + "/out --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("directory is not empty (pass --force"), std::string::npos) << r.output;
+  EXPECT_EQ(read_text(dir + "/out/summary.json"), summary);
+  fs::remove_all(dir);
+}
+
+TEST(CliRun, BadSceneExitsTwoAndWritesNothing) {
+  const std::string dir = fresh_temp_dir("run_bad");
+  write_text(dir + "/scene.json", R"({"control": {"mode": "magic"}})");
+  const CommandResult r = run_vascsim("run " + dir + "/scene.json --out " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find(dir + "/scene.json: /control/mode: expected one of \"force\", \"kinematic\", \"field\", got \"magic\""),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+  fs::remove_all(dir);
+}
+
+TEST(CliRun, DivergingRunStopsWithMessageAndKeepsItsFrames) {
+  const std::string dir = fresh_temp_dir("run_fail");
+  // One Newton iteration, no retries: the first step cannot converge.
+  write_text(dir + "/scene.json", R"({"maze": {"seed": 4}, "rod": {"nodes": 12}, "run": {"duration": 1},
+      "solver": {"max_iterations": 1, "adaptive": false, "rel_tol": 1e-14}})");
+  const CommandResult r = run_vascsim("run " + dir + "/scene.json --out " + dir + "/out --quiet");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("simulation failed: at t = "), std::string::npos) << r.output;
+  FrameLogReader log(dir + "/out/frames.vlog");
+  EXPECT_GE(log.frame_count(), 1u);
+  const std::string summary = read_text(dir + "/out/summary.json");
+  EXPECT_NE(summary.find("\"ok\": false"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("Newton"), std::string::npos) << summary;
+  fs::remove_all(dir);
+}
+
+TEST(CliRun, KilledRunLeavesAReadableLog) {
+  const std::string dir = fresh_temp_dir("run_kill");
+  write_text(dir + "/scene.json", R"({"maze": {"seed": 4}, "run": {"duration": 1000, "output_interval": 0.001}})");
+  const CommandResult r = run_vascsim_killed_after("run " + dir + "/scene.json --out " + dir + "/out --quiet", 1.5);
+  (void)r;
+  FrameLogReader log(dir + "/out/frames.vlog");
+  const std::size_t n = log.frame_count();
+  ASSERT_GE(n, 2u);
+  std::vector<double> last;
+  log.read(n - 1, last);
+  EXPECT_NEAR(last[0], 0.001 * static_cast<double>(n - 1), 1e-9);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace vascsim::test
