@@ -1,4 +1,4 @@
-#include "sim/io/log_metadata.h"
+#include "sim/log/channel_names.h"
 #include "sim/rod/loads.h"
 
 namespace vascsim {

@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include "sim/io/log_metadata.h"
+#include "sim/log/channel_names.h"
 #include "sim/rod/loads.h"
 
 namespace vascsim {

@@ -36,7 +36,7 @@ struct ForceContext {
 class ForceModule {
  public:
   virtual ~ForceModule() = default;
-  // Frame log channel of this force (sim/io/log_metadata.h, namespace channel), e.g.
+  // Frame log channel of this force (sim/log/channel_names.h), e.g.
   // "force/drag". Modules sharing a channel are summed in the log.
   virtual std::string channel() const = 0;
   virtual void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const = 0;
