@@ -38,6 +38,8 @@ const BadScene kBadScenes[] = {
      "/maze/start: expected a point inside the maze bounds, got [2.0,0.5]"},
     {"format", R"({"format": "vascsim-scene/9"})", "/format: expected \"vascsim-scene/1\", got \"vascsim-scene/9\""},
     {"not_object", R"([1, 2])", "/: expected an object, got [1,2]"},
+    {"shape_in_maze", R"({"shape": {"direction": 1.0}})",
+     "/shape: expected no \"shape\" in a maze scene (the rod starts at the entry port, docs/navigation.md), got an object"},
 };
 
 class SceneErrors : public ::testing::TestWithParam<BadScene> {};

@@ -26,48 +26,28 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
     in.fail("format", "\"vascsim-scene/1\"", root["format"]);
   scene.name = in.text("name", scene.name);
   in.text("description", "");
-  if (const json* maze = in.raw("maze"); maze && maze->is_null()) {
+  // Each section has its reader in sim/io/read_<section>.cpp.
+  const auto section = [&in](const char* key, auto reader, auto& spec) {
+    io::FieldReader fields = in.object(key);
+    reader(fields, spec);
+  };
+  if (const json* maze = in.raw("maze"); maze && maze->is_null())
     scene.has_maze = false;
-  } else {
-    auto section = in.object("maze");
-    io::read_maze(section, scene.maze);
-  }
-  {
-    auto section = in.object("path");
-    io::read_path(section, scene.path);
-  }
-  {
-    auto section = in.object("rod");
-    io::read_rod(section, scene.rod);
-  }
-  {
-    auto section = in.object("run");
-    io::read_run(section, scene.run);
-  }
-  {
-    auto section = in.object("control");
-    io::read_control(section, scene.control);
-  }
-  {
-    auto section = in.object("contact");
-    io::read_contact(section, scene.contact);
-  }
-  {
-    auto section = in.object("shape");
-    io::read_shape(section, scene.shape);
-  }
-  {
-    auto section = in.object("boundary");
-    io::read_boundary(section, scene.boundary);
-  }
-  {
-    auto section = in.object("loads");
-    io::read_loads(section, scene.loads);
-  }
-  {
-    auto section = in.object("solver");
-    io::read_solver(section, scene.solver);
-  }
+  else
+    section("maze", io::read_maze, scene.maze);
+  section("path", io::read_path, scene.path);
+  section("rod", io::read_rod, scene.rod);
+  section("run", io::read_run, scene.run);
+  section("control", io::read_control, scene.control);
+  section("contact", io::read_contact, scene.contact);
+  section("shape", io::read_shape, scene.shape);
+  section("boundary", io::read_boundary, scene.boundary);
+  section("loads", io::read_loads, scene.loads);
+  section("solver", io::read_solver, scene.solver);
+  // A maze run places the rod at the maze's entry port; a shape there would be silently ignored.
+  if (scene.has_maze && in.has("shape"))
+    in.fail("shape", "no \"shape\" in a maze scene (the rod starts at the entry port, docs/navigation.md)",
+            root["shape"]);
   in.finish();
   return scene;
 }
