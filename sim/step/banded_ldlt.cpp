@@ -57,14 +57,13 @@ void banded_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b) {
   constexpr int K = BandedMatrix::kHalfBandwidth;
   const int n = factor.size();
   const double* band = factor.data();
-  // L y = b
+  // L y = b, then D z = y (the diagonal holds 1/D), in one pass
   for (int i = 0; i < n; ++i) {
     const double* row = band + static_cast<std::size_t>(i) * W;
     double s = b[i];
     for (int m = 1; m <= K && i - m >= 0; ++m) s -= row[m] * b[i - m];
     b[i] = s;
   }
-  // D z = y (the diagonal holds 1/D)
   for (int i = 0; i < n; ++i) b[i] *= band[static_cast<std::size_t>(i) * W];
   // L^T x = z
   for (int i = n - 1; i >= 0; --i) {
