@@ -53,28 +53,40 @@ Box2 world_box(const LogMetadata& meta, const FrameState& first) {
 
 }  // namespace
 
+double typical_peak(std::vector<double> v) {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !(x > 0); }), v.end());
+  if (v.empty()) return 0;
+  const std::size_t k = v.size() < 20 ? v.size() - 1 : static_cast<std::size_t>(0.95 * (v.size() - 1));
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
+  return v[k];
+}
+
 ForceScales choose_force_scales(const FrameSource& source, double t0, double t1, const ViewOptions& view) {
   const std::size_t i0 = source.frame_at_time(t0), i1 = source.frame_at_time(t1);
   const std::size_t step = std::max<std::size_t>(1, (i1 - i0 + 1) / 2000);
-  double max_act = 0, max_con = 0;
+  std::vector<double> act, con;
   FrameState f;
   for (std::size_t i = i0; i <= i1; i += step) {
     source.frame(i, f);
-    max_act = std::max(max_act, f.actuation_total().norm());
-    max_con = std::max(max_con, f.max_contact());
+    act.push_back(f.actuation_total().norm());
+    con.push_back(f.max_contact());
   }
+  const double peak_act = typical_peak(act), peak_con = typical_peak(con);
   ForceScales s;
   const double span = std::min(view.width * (view.panel && view.width >= 1.2 * view.height ? 0.72 : 1.0),
                                static_cast<double>(view.height));
-  s.unit = force_unit(std::max(max_act, max_con));
-  // The largest force of the video draws this long: visible, yet short of crossing the maze.
-  if (max_act > 0) {
-    s.actuation_px_per_newton = view.actuation_px_per_newton > 0 ? view.actuation_px_per_newton : 0.16 * span / max_act;
-    s.actuation_reference = nice_floor(max_act);
+  s.unit = force_unit(std::max(peak_act, peak_con));
+  // A typical large force draws this long: visible, yet short of crossing the maze. Rarer,
+  // larger forces draw longer, up to a cap (the HUD gives their value).
+  if (peak_act > 0) {
+    s.actuation_px_per_newton = view.actuation_px_per_newton > 0 ? view.actuation_px_per_newton : 0.16 * span / peak_act;
+    s.actuation_reference = nice_floor(peak_act);
+    if (view.actuation_px_per_newton <= 0) s.actuation_max_px = 0.4 * span;
   }
-  if (max_con > 0) {
-    s.contact_px_per_newton = view.contact_px_per_newton > 0 ? view.contact_px_per_newton : 0.10 * span / max_con;
-    s.contact_reference = nice_floor(max_con);
+  if (peak_con > 0) {
+    s.contact_px_per_newton = view.contact_px_per_newton > 0 ? view.contact_px_per_newton : 0.10 * span / peak_con;
+    s.contact_reference = nice_floor(peak_con);
+    if (view.contact_px_per_newton <= 0) s.contact_max_px = 0.25 * span;
   }
   return s;
 }
@@ -155,16 +167,20 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
   const float contact_w = std::max(2.0f, h / 280.0f);
   if (scales_.contact_px_per_newton > 0 && !f.contact.empty()) {
     for (std::size_t i = 0; i < f.node_count(); ++i) {
-      const glm::vec2 d(static_cast<float>(f.contact[2 * i] * scales_.contact_px_per_newton),
-                        static_cast<float>(-f.contact[2 * i + 1] * scales_.contact_px_per_newton));
-      if (d.x * d.x + d.y * d.y < 1.0f) continue;
+      glm::vec2 d(static_cast<float>(f.contact[2 * i] * scales_.contact_px_per_newton),
+                  static_cast<float>(-f.contact[2 * i + 1] * scales_.contact_px_per_newton));
+      const float len = std::sqrt(d.x * d.x + d.y * d.y);
+      if (len < 1.0f) continue;
+      if (len > scales_.contact_max_px) d *= static_cast<float>(scales_.contact_max_px) / len;
       c.arrow(scratch_[i], scratch_[i] + d, contact_w, kContact);
     }
   }
   if (scales_.actuation_px_per_newton > 0 && !f.actuation.empty()) {
     const Vec2 F = f.actuation_total() * scales_.actuation_px_per_newton;
-    const glm::vec2 d(static_cast<float>(F.x()), static_cast<float>(-F.y()));
-    if (d.x * d.x + d.y * d.y >= 1.0f) c.arrow(scratch_.back(), scratch_.back() + d, std::max(3.0f, h / 200.0f), kActuation);
+    glm::vec2 d(static_cast<float>(F.x()), static_cast<float>(-F.y()));
+    const float len = std::sqrt(d.x * d.x + d.y * d.y);
+    if (len > scales_.actuation_max_px) d *= static_cast<float>(scales_.actuation_max_px) / len;
+    if (len >= 1.0f) c.arrow(scratch_.back(), scratch_.back() + d, std::max(3.0f, h / 200.0f), kActuation);
   }
 }
 

@@ -33,11 +33,17 @@ struct ViewOptions {
 struct ForceScales {
   double actuation_px_per_newton = 0, contact_px_per_newton = 0;  // 0: channel absent or zero
   double actuation_reference = 0, contact_reference = 0;          // N, legend arrow values
+  double actuation_max_px = 1e9, contact_max_px = 1e9;            // px, longer arrows are capped
   DisplayUnit unit{1e3, "mN"};
 };
 
-// Chooses ForceScales from the frames in [t0, t1] (at most ~2000 sampled), honouring explicit
-// px-per-newton values in `view`.
+// The 95th percentile of the non-zero values (their maximum if fewer than 20): a start-up
+// spike must not shrink every other arrow of a video or plot to nothing.
+double typical_peak(std::vector<double> values);
+
+// Chooses ForceScales from the frames in [t0, t1] (at most ~2000 sampled): the 95th percentile
+// of the force draws a fixed fraction of the frame. Explicit px-per-newton values in `view`
+// win and are never capped.
 ForceScales choose_force_scales(const FrameSource& source, double t0, double t1, const ViewOptions& view);
 
 class FramePainter {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "render/frame_painter.h"
 #include "render/number_format.h"
 #include "render/png_writer.h"
 #include "sim/scene/input_error.h"
@@ -219,22 +220,29 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     Axes a = map_axes(c, source, s, to_mm);
     draw_axes(c, a, "x (mm)", "y (mm)", "Tip trajectory and magnetic force");
     draw_walls(c, a, m, to_mm);
+    // The trajectory first and the reference dashed on top, so both show where they coincide.
     std::vector<glm::vec2> pts;
-    for (const auto& p : m.path) pts.push_back(a.map(p.x() * to_mm, p.y() * to_mm));
-    c.dashed_polyline(pts, 2.5f, 9, 6, kPath);
-    pts.clear();
     for (const auto& p : s.tip) pts.push_back(a.map(p.x() * to_mm, p.y() * to_mm));
-    c.polyline(pts, 2.5f, kTip);
+    c.polyline(pts, 4.0f, kTip);
+    pts.clear();
+    for (const auto& p : m.path) pts.push_back(a.map(p.x() * to_mm, p.y() * to_mm));
+    c.dashed_polyline(pts, 1.8f, 9, 6, kPath);
     std::vector<std::pair<Rgba, std::string>> entries = {{kPath, "reference path"}, {kTip, "tip trajectory"}};
-    if (s.has_actuation && max_act > 0) {
-      const double px_per_n = 0.08 * (a.right - a.left) / max_act;
+    std::vector<double> magnitudes;
+    for (const auto& f : s.actuation) magnitudes.push_back(f.norm());
+    const double typical = typical_peak(magnitudes);
+    if (s.has_actuation && typical > 0) {
+      const double nominal = 0.06 * (a.right - a.left), px_per_n = nominal / typical;
       for (int k = 0; k < 16; ++k) {
         const std::size_t i = (s.t.size() - 1) * k / 15;
         const glm::vec2 p = a.map(s.tip[i].x() * to_mm, s.tip[i].y() * to_mm);
-        const Vec2 d = s.actuation[i] * px_per_n;
-        c.arrow(p, p + glm::vec2(float(d.x()), float(-d.y())), 2.5f, kActuation);
+        glm::vec2 d(float(s.actuation[i].x() * px_per_n), float(-s.actuation[i].y() * px_per_n));
+        const float len = std::sqrt(d.x * d.x + d.y * d.y);
+        if (len > 2.5f * nominal) d *= float(2.5 * nominal) / len;  // rare spikes capped
+        c.arrow(p, p + d, 2.5f, kActuation);
       }
-      entries.push_back({kActuation, "magnetic force (max " + format_value(max_act, fu, 2) + ")"});
+      entries.push_back({kActuation, "magnetic force (" + format_value(typical, fu, 2) + " = " +
+                                         std::to_string(int(std::lround(nominal))) + " px)"});
     }
     legend(c, a, entries, font, true);
     save(c, (fs::path(dir) / "tip_trajectory.png").string(), force, written);
