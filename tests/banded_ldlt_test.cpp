@@ -68,6 +68,44 @@ TEST(BandedLdlt, ReportsSingularMatrix) {
   EXPECT_EQ(f.failed_row, 1);
 }
 
+// The block variant on rod-shaped matrices (nodes coupled at most two apart: A(2i, 2i-5) = 0).
+BandedMatrix random_rod_band(int nodes, double shift, std::mt19937& rng) {
+  BandedMatrix a = random_band(2 * nodes, shift, rng);
+  for (int i = 3; i < nodes; ++i) a.lower(2 * i, 2 * i - 5) = 0.0;
+  return a;
+}
+
+TEST(BandedBlockLdlt, MatchesEigenOnDefiniteAndIndefiniteRodMatrices) {
+  std::mt19937 rng(5);
+  for (int nodes : {1, 2, 3, 50}) {
+    for (double shift : {12.0, 0.3}) {
+      BandedMatrix a = random_rod_band(nodes, shift, rng);
+      const Eigen::MatrixXd dense = a.to_dense();
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(dense);
+      const int negative = static_cast<int>((eig.eigenvalues().array() < 0.0).count());
+      Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(2 * nodes, -1.0, 2.0);
+      const Eigen::VectorXd expected = dense.fullPivLu().solve(b);
+      const LdltResult f = banded_block_ldlt_factor(a);
+      ASSERT_TRUE(f.ok) << nodes;
+      EXPECT_EQ(f.negative_pivots, negative) << nodes << " " << shift;
+      banded_block_ldlt_solve(a, b);
+      EXPECT_LT((b - expected).lpNorm<Eigen::Infinity>(), 1e-9 * std::max(1.0, expected.lpNorm<Eigen::Infinity>()))
+          << nodes << " " << shift;
+    }
+  }
+}
+
+TEST(BandedBlockLdlt, ReportsSingularMatrix) {
+  BandedMatrix a(4);
+  a.lower(0, 0) = 1.0;
+  a.lower(1, 0) = 1.0;
+  a.lower(1, 1) = 1.0;  // block 0 singular
+  a.lower(2, 2) = a.lower(3, 3) = 1.0;
+  const LdltResult f = banded_block_ldlt_factor(a);
+  EXPECT_FALSE(f.ok);
+  EXPECT_EQ(f.failed_row, 1);
+}
+
 TEST(BandedMatrix, MultiplyMatchesDense) {
   std::mt19937 rng(3);
   const BandedMatrix a = random_band(23, 0.0, rng);

@@ -50,9 +50,9 @@ double time_iteration(int nodes, double budget) {
   do {
     for (int k = 0; k < 10; ++k) {
       assemble(model, p, ws.x, ws, true);
-      banded_ldlt_factor(ws.jacobian);
+      banded_block_ldlt_factor(ws.jacobian);
       ws.dx = -ws.residual;
-      banded_ldlt_solve(ws.jacobian, ws.dx);
+      banded_block_ldlt_solve(ws.jacobian, ws.dx);
     }
     reps += 10;
     elapsed = std::chrono::duration<double>(Clock::now() - start).count();

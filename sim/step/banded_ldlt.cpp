@@ -74,3 +74,140 @@ void banded_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b) {
 }
 
 }  // namespace vascsim
+
+namespace vascsim {
+
+namespace {
+
+// A 2x2 block as plain numbers: [a b; c d].
+struct M2 {
+  double a, b, c, d;
+};
+inline M2 mul(const M2& x, const M2& y) {
+  return {x.a * y.a + x.b * y.c, x.a * y.b + x.b * y.d, x.c * y.a + x.d * y.c, x.c * y.b + x.d * y.d};
+}
+// x * y^T
+inline M2 mul_t(const M2& x, const M2& y) {
+  return {x.a * y.a + x.b * y.b, x.a * y.c + x.b * y.d, x.c * y.a + x.d * y.b, x.c * y.c + x.d * y.d};
+}
+
+// Band row r holds A(r, r-m) at row[m]. Block (i, j), j = i-1 or i-2, rows 2i, 2i+1.
+inline M2 get_block(const double* band, int i, int j) {
+  constexpr int W = BandedMatrix::kWidth;
+  const double* r0 = band + static_cast<std::size_t>(2 * i) * W;
+  const double* r1 = r0 + W;
+  const int o = 2 * (i - j);  // offset of column 2j in row 2i
+  return {r0[o], r0[o - 1], r1[o + 1], r1[o]};
+}
+inline void set_block(double* band, int i, int j, const M2& m) {
+  constexpr int W = BandedMatrix::kWidth;
+  double* r0 = band + static_cast<std::size_t>(2 * i) * W;
+  double* r1 = r0 + W;
+  const int o = 2 * (i - j);
+  r0[o] = m.a;
+  r0[o - 1] = m.b;
+  r1[o + 1] = m.c;
+  r1[o] = m.d;
+}
+
+}  // namespace
+
+inline M2 get_diag(const double* band, int i) {
+  constexpr int W = BandedMatrix::kWidth;
+  const double* r0 = band + static_cast<std::size_t>(2 * i) * W;
+  const double* r1 = r0 + W;
+  return {r0[0], r1[1], r1[1], r1[0]};
+}
+
+// Block LDL^T, for block row i (W_k = L(i,k) D_k):
+//   W2 = A(i,i-2),                   L2 = W2 D_{i-2}^-1
+//   W1 = A(i,i-1) - W2 L(i-1,i-2)^T, L1 = W1 D_{i-1}^-1
+//   D_i = A(i,i) - L2 W2^T - L1 W1^T
+LdltResult banded_block_ldlt_factor(BandedMatrix& a, double pivot_tol) {
+  constexpr int W = BandedMatrix::kWidth;
+  LdltResult result;
+  const int nodes = a.size() / 2;
+  double* band = a.data();
+  for (int i = 0; i < nodes; ++i) {
+    M2 d = get_diag(band, i);
+    const double scale = std::abs(d.a) + std::abs(d.d) + 2.0 * std::abs(d.b);
+    if (i >= 2) {
+      const M2 w2 = get_block(band, i, i - 2);
+      const M2 l2 = mul(w2, get_diag(band, i - 2));
+      const M2 lt = get_block(band, i - 1, i - 2);  // L(i-1, i-2), already factored
+      M2 w1 = get_block(band, i, i - 1);
+      const M2 c = mul_t(w2, lt);
+      w1 = {w1.a - c.a, w1.b - c.b, w1.c - c.c, w1.d - c.d};
+      const M2 l1 = mul(w1, get_diag(band, i - 1));
+      const M2 e2 = mul_t(l2, w2), e1 = mul_t(l1, w1);
+      d = {d.a - e2.a - e1.a, d.b - e2.b - e1.b, d.c - e2.c - e1.c, d.d - e2.d - e1.d};
+      set_block(band, i, i - 2, l2);
+      set_block(band, i, i - 1, l1);
+    } else if (i == 1) {
+      const M2 w1 = get_block(band, 1, 0);
+      const M2 l1 = mul(w1, get_diag(band, 0));
+      const M2 e1 = mul_t(l1, w1);
+      d = {d.a - e1.a, d.b - e1.b, d.c - e1.c, d.d - e1.d};
+      set_block(band, 1, 0, l1);
+    }
+    const double det = d.a * d.d - d.b * d.c;
+    if (!std::isfinite(det) || det == 0.0 || std::abs(det) <= pivot_tol * scale * scale) {
+      result.failed_row = 2 * i + 1;
+      return result;
+    }
+    if (det < 0.0) ++result.negative_pivots;
+    else if (d.a + d.d < 0.0) result.negative_pivots += 2;
+    const double inv = 1.0 / det;
+    double* r0 = band + static_cast<std::size_t>(2 * i) * W;
+    double* r1 = r0 + W;
+    r0[0] = d.d * inv;
+    r1[1] = -0.5 * (d.b + d.c) * inv;
+    r1[0] = d.a * inv;
+  }
+  result.ok = true;
+  return result;
+}
+
+void banded_block_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b) {
+  const int nodes = factor.size() / 2;
+  const double* band = factor.data();
+  // L y = b
+  for (int i = 1; i < nodes; ++i) {
+    double y0 = b[2 * i], y1 = b[2 * i + 1];
+    const M2 l1 = get_block(band, i, i - 1);
+    y0 -= l1.a * b[2 * i - 2] + l1.b * b[2 * i - 1];
+    y1 -= l1.c * b[2 * i - 2] + l1.d * b[2 * i - 1];
+    if (i >= 2) {
+      const M2 l2 = get_block(band, i, i - 2);
+      y0 -= l2.a * b[2 * i - 4] + l2.b * b[2 * i - 3];
+      y1 -= l2.c * b[2 * i - 4] + l2.d * b[2 * i - 3];
+    }
+    b[2 * i] = y0;
+    b[2 * i + 1] = y1;
+  }
+  // D z = y
+  for (int i = 0; i < nodes; ++i) {
+    const M2 dinv = get_diag(band, i);
+    const double y0 = b[2 * i], y1 = b[2 * i + 1];
+    b[2 * i] = dinv.a * y0 + dinv.b * y1;
+    b[2 * i + 1] = dinv.c * y0 + dinv.d * y1;
+  }
+  // L^T x = z
+  for (int i = nodes - 1; i >= 0; --i) {
+    double x0 = b[2 * i], x1 = b[2 * i + 1];
+    if (i + 1 < nodes) {
+      const M2 l = get_block(band, i + 1, i);
+      x0 -= l.a * b[2 * i + 2] + l.c * b[2 * i + 3];
+      x1 -= l.b * b[2 * i + 2] + l.d * b[2 * i + 3];
+    }
+    if (i + 2 < nodes) {
+      const M2 l = get_block(band, i + 2, i);
+      x0 -= l.a * b[2 * i + 4] + l.c * b[2 * i + 5];
+      x1 -= l.b * b[2 * i + 4] + l.d * b[2 * i + 5];
+    }
+    b[2 * i] = x0;
+    b[2 * i + 1] = x1;
+  }
+}
+
+}  // namespace vascsim

@@ -31,3 +31,16 @@ LdltResult banded_ldlt_factor(BandedMatrix& a, double pivot_tol = 1e-13);
 void banded_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b);
 
 }  // namespace vascsim
+
+namespace vascsim {
+
+// The same factorisation by 2x2 blocks (one block per rod node), for matrices whose entries
+// couple nodes at most two apart (every rod Newton matrix; ForceModule's contract), i.e. the
+// band entries A(2i, 2i-5) are zero, and of even size. Per node: one 2x2 inverse and a few
+// independent 2x2 products, a shorter dependency chain than the scalar rows (the scalar
+// factorisation is latency-bound). The diagonal blocks store D_i^-1; negative_pivots counts
+// negative eigenvalues of the D_i (still the inertia of A); failed_row is 2i+1 for block i.
+LdltResult banded_block_ldlt_factor(BandedMatrix& a, double pivot_tol = 1e-13);
+void banded_block_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b);
+
+}  // namespace vascsim

@@ -141,13 +141,13 @@ NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace
                            static_cast<double>(out.iterations), rinf / std::max(scale, 1e-300));
       return out;
     }
-    const LdltResult f = banded_ldlt_factor(ws.jacobian);
+    const LdltResult f = banded_block_ldlt_factor(ws.jacobian);
     if (!f.ok) {
       out.failure = format("singular Newton matrix at degree of freedom %.0f (node %.0f)", f.failed_row, f.failed_row / 2);
       return out;
     }
     ws.dx = -ws.residual;
-    banded_ldlt_solve(ws.jacobian, ws.dx);
+    banded_block_ldlt_solve(ws.jacobian, ws.dx);
     ++out.iterations;
     const double dx_inf = ws.dx.lpNorm<Eigen::Infinity>();
     if (!std::isfinite(dx_inf)) {
