@@ -2,6 +2,8 @@
 // that keeps its frames and says why, and a killed run that leaves a readable log.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "sim/log/frame_log.h"
@@ -11,6 +13,12 @@ namespace vascsim::test {
 namespace {
 
 namespace fs = std::filesystem;
+
+std::string exact(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
 
 const char* kShortMaze = R"({"name": "short", "maze": {"seed": 4}, "rod": {"nodes": 12},
                              "path": {"speed": 0.2}, "run": {"duration": 0.5, "output_interval": 0.05}})";
@@ -60,6 +68,33 @@ TEST(CliRun, DivergingRunStopsWithMessageAndKeepsItsFrames) {
   const std::string summary = read_text(dir + "/out/summary.json");
   EXPECT_NE(summary.find("\"ok\": false"), std::string::npos) << summary;
   EXPECT_NE(summary.find("Newton"), std::string::npos) << summary;
+  fs::remove_all(dir);
+}
+
+TEST(CliRun, StaticModeRecordsTheUnloadedRodAndItsEquilibrium) {
+  // Small-deflection cantilever, tip deflection P L^3 / (3 EI) (REFERENCES.md section 2);
+  // alpha = P L^2 / EI = 0.01 keeps the elastica's nonlinear correction below 1e-5.
+  const double pi = 3.14159265358979323846;
+  const double ei = 1.47e6 * pi * (std::pow(0.002, 4) - std::pow(0.001, 4)) / 4.0;  // Table I
+  const double length = 0.5, alpha = 0.01;
+  const double load = alpha * ei / (length * length);
+  const std::string dir = fresh_temp_dir("run_static");
+  write_text(dir + "/scene.json", R"({"maze": null, "rod": {"nodes": 41}, "boundary": {"clamp": "centred"},
+      "solver": {"mode": "static"}, "loads": {"point": [{"node": -1, "force": [0, )" + exact(-load) + "]}]}}");
+  const CommandResult r = run_vascsim("run " + dir + "/scene.json --out " + dir + "/out --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  FrameLogReader log(dir + "/out/frames.vlog");
+  ASSERT_EQ(log.frame_count(), 2u);
+  const int position = log.header().find_channel("position");
+  ASSERT_GE(position, 0);
+  const std::size_t tip_y = log.header().channel_offset(position) + 2 * 40 + 1;
+  std::vector<double> unloaded, loaded;
+  log.read(0, unloaded);
+  log.read(1, loaded);
+  EXPECT_EQ(unloaded[0], 0.0);
+  EXPECT_EQ(loaded[0], 1.0);
+  EXPECT_EQ(unloaded[tip_y], 0.0);
+  EXPECT_NEAR(-loaded[tip_y], length * alpha / 3.0, 2e-3 * length * alpha / 3.0);
   fs::remove_all(dir);
 }
 

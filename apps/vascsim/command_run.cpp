@@ -152,9 +152,13 @@ int run_run_command(int argc, char** argv) {
   const std::string summary_path = (fs::path(*out) / "summary.json").string();
   write_file_atomically(summary_path, run_summary_json(scene, run));
   const RunStatistics& s = run.statistics();
-  std::printf("%s: %d steps, %.2f s simulated in %.2f s (%.1fx real time), %zu frames -> %s\n",
-              ok ? "done" : "FAILED", s.steps, s.simulated_time, s.wall_time,
-              s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0, s.frames, log_path.c_str());
+  if (scene.solver.mode == SolveMode::kStatic)
+    std::printf("%s: static equilibrium in %d load increments, %lld Newton iterations, %.2f s, %zu frames -> %s\n",
+                ok ? "done" : "FAILED", s.steps, s.newton_iterations, s.wall_time, s.frames, log_path.c_str());
+  else
+    std::printf("%s: %d steps, %.2f s simulated in %.2f s (%.1fx real time), %zu frames -> %s\n",
+                ok ? "done" : "FAILED", s.steps, s.simulated_time, s.wall_time,
+                s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0, s.frames, log_path.c_str());
   if (run.navigation())
     std::printf("goal %s%s, tip error rms %.2f mm max %.2f mm, max penetration %.3f mm\n",
                 s.goal_reached ? "reached at t = " : "not reached",

@@ -21,6 +21,8 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   j["scene"] = scene.name;
   j["ok"] = !s.failed;
   j["failure"] = s.failed ? json(s.failure) : json(nullptr);
+  const bool is_static = scene.solver.mode == SolveMode::kStatic;
+  j["mode"] = is_static ? "static" : "dynamic";  // static: steps are load increments, time the load scale
   j["steps"] = s.steps;
   j["rejected_steps"] = s.rejected_steps;
   j["newton_iterations"] = {{"total", s.newton_iterations},
@@ -29,7 +31,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   j["frames"] = s.frames;
   j["simulated_time"] = s.simulated_time;
   j["wall_time"] = s.wall_time;
-  j["real_time_factor"] = s.wall_time > 0 ? json(s.simulated_time / s.wall_time) : json(nullptr);
+  j["real_time_factor"] = s.wall_time > 0 && !is_static ? json(s.simulated_time / s.wall_time) : json(nullptr);
   const State& state = run.state();
   json positions = json::array(), velocities = json::array();
   for (Eigen::Index i = 0; i < state.x.size(); i += 2) {

@@ -48,6 +48,17 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
   if (scene.has_maze && in.has("shape"))
     in.fail("shape", "no \"shape\" in a maze scene (the rod starts at the entry port, docs/navigation.md)",
             root["shape"]);
+  // The controller follows a trajectory in time; an equilibrium has no time to follow it in.
+  if (scene.has_maze && scene.solver.mode == SolveMode::kStatic)
+    in.object("solver").fail("mode", "\"dynamic\" in a maze scene (static equilibrium has no trajectory to follow)",
+                             root["solver"]["mode"]);
+  // Static mode solves under the loads' values at t = 0 (it ramps them itself): a ramp or sine
+  // profile would be zero or meaningless there, so it is refused rather than silently dropped.
+  if (scene.solver.mode == SolveMode::kStatic)
+    for (std::size_t i = 0; i < scene.loads.point_loads.size(); ++i)
+      if (scene.loads.point_loads[i].profile != LoadProfile::kConstant)
+        io::FieldReader(root["loads"]["point"][i], in.file(), "/loads/point/" + std::to_string(i))
+            .fail("profile", "\"constant\" with solver mode \"static\"", root["loads"]["point"][i]["profile"]);
   in.finish();
   return scene;
 }

@@ -68,12 +68,15 @@ class Run {
   // output interval. `progress` (may be empty) is called after each frame with t.
   // Returns false if the simulation failed; the statistics say why, and every frame computed
   // before the failure has been written.
+  // In static mode (scene solver.mode) it instead records the unloaded rod at t = 0 and the
+  // equilibrium under the full loads at t = 1 (time stands for the load scale).
   bool run(FrameSink& sink, const std::function<void(double t)>& progress = {});
 
  private:
   // The controller's inputs for the next step (remembers the command for the log).
   Controls controls_for_step(double dt);
   bool advance(double dt);
+  bool solve_equilibrium(FrameSink& sink);
   void record(FrameSink& sink);
   void update_statistics(double dt, const Controls& controls);
   // The force of every module writing channel `name`, at the committed state.
