@@ -34,19 +34,22 @@ glm::vec2 apply(const glm::dmat3& m, Vec2 p) {
   return {static_cast<float>(q.x), static_cast<float>(q.y)};
 }
 
+// Everything the fit camera must show: the environment's bounds and every wall including its
+// thickness (a thick outer wall reaches beyond the bounds); without bounds, also the path and rod.
 Box2 world_box(const LogMetadata& meta, const FrameState& first) {
-  Box2 b = meta.bounds;
-  if ((b.max - b.min).minCoeff() > 0) return b;
-  // No bounds in the log: take everything the run knows about.
-  b.min = Vec2::Constant(1e300);
-  b.max = Vec2::Constant(-1e300);
-  auto grow = [&](Vec2 p) {
-    b.min = b.min.cwiseMin(p);
-    b.max = b.max.cwiseMax(p);
+  Box2 b{Vec2::Constant(1e300), Vec2::Constant(-1e300)};
+  auto grow = [&](Vec2 p, double radius) {
+    b.min = b.min.cwiseMin(p - Vec2::Constant(radius));
+    b.max = b.max.cwiseMax(p + Vec2::Constant(radius));
   };
-  for (const auto& w : meta.walls) grow(w.a), grow(w.b);
-  for (const auto& p : meta.path) grow(p);
-  for (std::size_t i = 0; i < first.node_count(); ++i) grow(first.node(i));
+  for (const auto& w : meta.walls) grow(w.a, 0.5 * w.thickness), grow(w.b, 0.5 * w.thickness);
+  const bool has_bounds = (meta.bounds.max - meta.bounds.min).minCoeff() > 0;
+  if (has_bounds) {
+    grow(meta.bounds.min, 0.0), grow(meta.bounds.max, 0.0);
+    return b;
+  }
+  for (const auto& p : meta.path) grow(p, 0.0);
+  for (std::size_t i = 0; i < first.node_count(); ++i) grow(first.node(i), 0.0);
   const Vec2 pad = Vec2::Constant(std::max(1e-3, 0.05 * (b.max - b.min).maxCoeff()));
   return {b.min - pad, b.max + pad};
 }
@@ -61,12 +64,12 @@ double typical_peak(std::vector<double> v) {
   return v[k];
 }
 
-ForceScales choose_force_scales(const FrameSource& source, double t0, double t1, const ViewOptions& view) {
-  const std::size_t i0 = source.frame_at_time(t0), i1 = source.frame_at_time(t1);
-  const std::size_t step = std::max<std::size_t>(1, (i1 - i0 + 1) / 2000);
+ForceScales choose_force_scales(const FrameSource& source, const ViewOptions& view) {
+  const std::size_t frames = source.frame_count();
+  const std::size_t step = std::max<std::size_t>(1, frames / 2000);
   std::vector<double> act, con;
   FrameState f;
-  for (std::size_t i = i0; i <= i1; i += step) {
+  for (std::size_t i = 0; i < frames; i += step) {
     source.frame(i, f);
     act.push_back(f.actuation_total().norm());
     con.push_back(f.max_contact());
@@ -98,10 +101,13 @@ FramePainter::FramePainter(const LogMetadata& metadata, const ViewOptions& view,
   side_panel_ = view.panel && w >= 1.2 * h;
   font_px_ = std::max(9, static_cast<int>(std::lround(h / 36.0)));
   map_x0_ = 0;
+  // Without a side panel the HUD card takes a band across the top: the map starts below it, so
+  // the card never hides a wall or the rod.
+  map_y0_ = view.panel && !side_panel_ ? card_bottom() + 0.4f * static_cast<float>(font_px_) : 0.0f;
   // The panel needs about 15 characters of width whatever the frame size.
   map_x1_ = static_cast<float>(side_panel_ ? std::round(w - std::max(0.28 * w, 15.0 * font_px_)) : w);
   const Vec2 size = world_.max - world_.min;
-  scale_ = 0.94 * std::min((map_x1_ - map_x0_) / size.x(), h / size.y()) * view.zoom;
+  scale_ = 0.94 * std::min((map_x1_ - map_x0_) / size.x(), (h - map_y0_) / size.y()) * view.zoom;
 }
 
 glm::dmat3 FramePainter::camera(const FrameState& frame) const {
@@ -110,7 +116,7 @@ glm::dmat3 FramePainter::camera(const FrameState& frame) const {
   m[0][0] = scale_;
   m[1][1] = -scale_;  // y up in the world, down on screen
   m[2][0] = 0.5 * (map_x0_ + map_x1_) - centre.x() * scale_;
-  m[2][1] = 0.5 * view_.height + centre.y() * scale_;
+  m[2][1] = 0.5 * (map_y0_ + view_.height) + centre.y() * scale_;
   return m;
 }
 
@@ -184,6 +190,11 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
   }
 }
 
+float FramePainter::card_bottom() const {
+  const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = 1.45f * fs;
+  return 0.5f * pad + 5.6f * row + pad;
+}
+
 void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   const float W = static_cast<float>(view_.width), H = static_cast<float>(view_.height);
   const int fs = font_px_, small = std::max(9, static_cast<int>(std::lround(0.8 * fs)));
@@ -200,7 +211,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     x0 = 0.5f * pad;
     y0 = 0.5f * pad;
     x1 = x0 + std::min(W - pad, 16.0f * fs);
-    c.box({x0, y0}, {x1, y0 + 5.6f * row + pad}, hex(0xFFFFFF, 0.88f), 0.4f * fs);
+    c.box({x0, y0}, {x1, card_bottom()}, hex(0xFFFFFF, 0.88f), 0.4f * fs);
   }
   const float lx = x0 + pad, rx = x1 - pad;
   float y = y0 + pad + fs;

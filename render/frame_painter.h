@@ -41,10 +41,11 @@ struct ForceScales {
 // spike must not shrink every other arrow of a video or plot to nothing.
 double typical_peak(std::vector<double> values);
 
-// Chooses ForceScales from the frames in [t0, t1] (at most ~2000 sampled): the 95th percentile
-// of the force draws a fixed fraction of the frame. Explicit px-per-newton values in `view`
-// win and are never capped.
-ForceScales choose_force_scales(const FrameSource& source, double t0, double t1, const ViewOptions& view);
+// Chooses ForceScales from the whole run (at most ~2000 frames sampled), not the rendered
+// window, so a clip draws the same arrows as the full video: the 95th percentile of the force
+// draws a fixed fraction of the frame. Explicit px-per-newton values in `view` win and are
+// never capped.
+ForceScales choose_force_scales(const FrameSource& source, const ViewOptions& view);
 
 class FramePainter {
  public:
@@ -60,12 +61,14 @@ class FramePainter {
   glm::dmat3 camera(const FrameState& frame) const;
   void paint_world(Canvas& c, const glm::dmat3& m, const FrameState& f, const std::vector<Vec2>& trail);
   void paint_panel(Canvas& c, const FrameState& f);
+  float card_bottom() const;  // px, lower edge of the HUD card of frames without a side panel
 
   LogMetadata meta_;
   ViewOptions view_;
   ForceScales scales_;
   Box2 world_;                    // m, what the fit camera shows
   float map_x0_, map_x1_;         // px, the map's horizontal extent (the panel takes the rest)
+  float map_y0_;                  // px, top of the map (below the HUD card of narrow frames)
   bool side_panel_;
   double scale_ = 1;              // px per m
   int font_px_;

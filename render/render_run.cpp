@@ -139,7 +139,7 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
 
   FrameState state;
   source.at_time(t0, state);
-  const ForceScales scales = choose_force_scales(source, t0, t1, view);
+  const ForceScales scales = choose_force_scales(source, view);
   FramePainter painter(source.metadata(), view, scales, state);
   Canvas canvas(view.width, view.height, o.aa);
 

@@ -76,7 +76,7 @@ void draw(const std::string& log, double act_scale, double con_scale, Picture& p
   view.actuation_px_per_newton = act_scale;
   view.contact_px_per_newton = con_scale;
   source.frame(0, state);
-  const ForceScales scales = choose_force_scales(source, 0, 0, view);
+  const ForceScales scales = choose_force_scales(source, view);
   static std::unique_ptr<FramePainter> painter;
   painter = std::make_unique<FramePainter>(source.metadata(), view, scales, state);
   Canvas canvas(kW, kH, AntiAliasing::kNone);

@@ -36,7 +36,7 @@ double draw_fps(const std::string& log, int width, int height, render::AntiAlias
   view.height = height;
   render::FrameState state;
   source.at_time(source.first_time(), state);
-  const auto scales = render::choose_force_scales(source, source.first_time(), source.last_time(), view);
+  const auto scales = render::choose_force_scales(source, view);
   render::FramePainter painter(source.metadata(), view, scales, state);
   render::Canvas canvas(width, height, aa);
   if (gl) *gl = canvas.gl_description();

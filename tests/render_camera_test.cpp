@@ -1,0 +1,58 @@
+// The fit camera shows the whole environment: a thick outer wall reaches half its thickness
+// beyond the maze bounds, and at every frame size (side panel or not) all four outer walls must
+// be on screen and not under the panel. A 640x480 frame once lost the right wall this way.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/canvas.h"
+#include "render/frame_painter.h"
+
+namespace vascsim::render {
+namespace {
+
+constexpr Rgba kWallColour = hex(0x3C4650);
+
+LogMetadata boxed_maze() {
+  LogMetadata m;
+  m.bounds = {Vec2(0, 0), Vec2(1, 1)};
+  const double t = 0.1;  // m, the default maze's wall thickness
+  m.walls = {{Vec2(0, 0), Vec2(1, 0), t}, {Vec2(1, 0), Vec2(1, 1), t}, {Vec2(1, 1), Vec2(0, 1), t},
+             {Vec2(0, 1), Vec2(0, 0), t}};
+  m.rod_outer_radius = 0.002;
+  return m;
+}
+
+bool is_wall(const std::vector<std::uint8_t>& rgba, int width, int height, glm::dvec2 p) {
+  const int x = static_cast<int>(std::floor(p.x)), y = static_cast<int>(std::floor(p.y));
+  if (x < 0 || y < 0 || x >= width || y >= height) return false;
+  const std::uint8_t* c = &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
+  return std::abs(c[0] - kWallColour.r * 255) < 4 && std::abs(c[1] - kWallColour.g * 255) < 4 &&
+         std::abs(c[2] - kWallColour.b * 255) < 4;
+}
+
+TEST(RenderCamera, FitShowsEveryThickOuterWallAtEveryFrameSize) {
+  const LogMetadata meta = boxed_maze();
+  FrameState frame;
+  frame.position = {0.4, 0.5, 0.5, 0.5, 0.6, 0.5};
+  const int sizes[][2] = {{640, 480}, {1280, 720}, {1920, 1080}, {480, 640}, {400, 400}};
+  for (const auto& size : sizes) {
+    ViewOptions view;
+    view.width = size[0];
+    view.height = size[1];
+    FramePainter painter(meta, view, ForceScales{}, frame);
+    Canvas canvas(view.width, view.height, AntiAliasing::kNone);
+    painter.paint(canvas, frame, {});
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(view.width) * view.height * 4);
+    canvas.finish(rgba.data());
+    // Just inside each wall's outer face, at the middle of the wall.
+    const double inset = 0.05 - 3.0 / painter.pixels_per_metre();
+    const Vec2 probes[] = {{0.5, -inset}, {1 + inset, 0.5}, {0.5, 1 + inset}, {-inset, 0.5}};
+    for (const Vec2& p : probes)
+      EXPECT_TRUE(is_wall(rgba, view.width, view.height, painter.to_pixel(frame, p)))
+          << view.width << "x" << view.height << ": outer wall not visible at (" << p.x() << ", " << p.y() << ")";
+  }
+}
+
+}  // namespace
+}  // namespace vascsim::render
