@@ -16,7 +16,7 @@ namespace {
 
 constexpr Rgba kInk = hex(0x212529);
 constexpr Rgba kGrid = hex(0xE3E6EA);
-constexpr Rgba kWall = hex(0x5C6770);
+constexpr Rgba kWall = hex(0xC3CAD2);
 constexpr Rgba kPath = hex(0x4C6EF5);
 constexpr Rgba kTip = hex(0xF08C00);
 constexpr Rgba kActuation = hex(0xAE3EC9);
@@ -101,6 +101,7 @@ void legend(Canvas& c, const Axes& a, const std::vector<std::pair<Rgba, std::str
             bool outside = false) {
   float w = 0;
   for (const auto& e : entries) w = std::max(w, c.text_width(e.second, font));
+  if (a.right + 20 + w + 3.5f * font > c.width()) outside = false;  // no room beside the axes
   const float x1 = outside ? a.right + 20 + w + 3.5f * font : a.right - 10, x0 = x1 - w - 3.5f * font,
               row = 1.4f * font;
   float y = a.top + 10;
@@ -114,9 +115,12 @@ void legend(Canvas& c, const Axes& a, const std::vector<std::pair<Rgba, std::str
   }
 }
 
+// Walls at their true thickness (at least 3 px), light enough for the data drawn over them.
 void draw_walls(Canvas& c, const Axes& a, const LogMetadata& m, double to_mm) {
+  const double px_per_m = to_mm * (a.right - a.left) / (a.xmax - a.xmin);
   for (const auto& w : m.walls)
-    c.capsule(a.map(w.a.x() * to_mm, w.a.y() * to_mm), a.map(w.b.x() * to_mm, w.b.y() * to_mm), 1.5f, kWall);
+    c.capsule(a.map(w.a.x() * to_mm, w.a.y() * to_mm), a.map(w.b.x() * to_mm, w.b.y() * to_mm),
+              std::max(1.5f, static_cast<float>(0.5 * w.thickness * px_per_m)), kWall);
 }
 
 Axes map_axes(const Canvas& c, const FrameSource& source, const Series& s, double to_mm) {
@@ -125,7 +129,9 @@ Axes map_axes(const Canvas& c, const FrameSource& source, const Series& s, doubl
   const LogMetadata& m = source.metadata();
   std::vector<double> xs, ys;
   auto add = [&](Vec2 p) { xs.push_back(p.x() * to_mm), ys.push_back(p.y() * to_mm); };
-  for (const auto& w : m.walls) add(w.a), add(w.b);
+  for (const auto& w : m.walls)
+    for (const Vec2& end : {w.a, w.b})
+      for (const Vec2& corner : {Vec2(-1, -1), Vec2(1, 1)}) add(end + 0.5 * w.thickness * corner);
   for (const auto& p : m.path) add(p);
   for (const auto& p : s.tip) add(p);
   fit_range(xs, a.xmin, a.xmax, false);
@@ -166,21 +172,36 @@ void Axes::equal_aspect() {
   }
 }
 
-void draw_axes(Canvas& c, const Axes& a, const std::string& xlabel, const std::string& ylabel,
-               const std::string& title) {
+void draw_grid(Canvas& c, const Axes& a) {
+  for (double x : nice_ticks(a.xmin, a.xmax, 8)) {
+    const float px = a.map(x, a.ymin).x;
+    c.box({px - 0.5f, a.top}, {px + 0.5f, a.bottom}, kGrid);
+  }
+  for (double y : nice_ticks(a.ymin, a.ymax, 6)) {
+    const float py = a.map(a.xmin, y).y;
+    c.box({a.left, py - 0.5f}, {a.right, py + 0.5f}, kGrid);
+  }
+}
+
+void draw_frame(Canvas& c, const Axes& a, const std::string& xlabel, const std::string& ylabel,
+                const std::string& title, Rgba page) {
+  // Data drawn so far is clipped to the axes by painting the margins over it.
+  const float w = static_cast<float>(c.width()), h = static_cast<float>(c.height());
+  c.fill_rect({0, 0}, {w, a.top}, page);
+  c.fill_rect({0, a.bottom}, {w, h}, page);
+  c.fill_rect({0, a.top}, {a.left, a.bottom}, page);
+  c.fill_rect({a.right, a.top}, {w, a.bottom}, page);
   const int font = std::max(10, static_cast<int>(std::lround(c.height() / 44.0)));
   const int tick_font = std::max(9, static_cast<int>(std::lround(0.85 * font)));
   const auto xt = nice_ticks(a.xmin, a.xmax, 8), yt = nice_ticks(a.ymin, a.ymax, 6);
   const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1, ystep = yt.size() > 1 ? yt[1] - yt[0] : 1;
   for (double x : xt) {
     const glm::vec2 p = a.map(x, a.ymin);
-    c.box({p.x - 0.5f, a.top}, {p.x + 0.5f, a.bottom}, kGrid);
     c.box({p.x - 0.75f, a.bottom}, {p.x + 0.75f, a.bottom + 6}, kInk);
     c.text(format_tick(x, xstep), {p.x, a.bottom + 8 + tick_font}, tick_font, kInk, TextAlign::kCenter);
   }
   for (double y : yt) {
     const glm::vec2 p = a.map(a.xmin, y);
-    c.box({a.left, p.y - 0.5f}, {a.right, p.y + 0.5f}, kGrid);
     c.box({a.left - 6, p.y - 0.75f}, {a.left, p.y + 0.75f}, kInk);
     c.text(format_tick(y, ystep), {a.left - 10, p.y + 0.35f * tick_font}, tick_font, kInk, TextAlign::kRight);
   }
@@ -218,7 +239,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   {  // Tip trajectory against the reference, with actuation arrows (paper Fig. 11).
     c.clear(white);
     Axes a = map_axes(c, source, s, to_mm);
-    draw_axes(c, a, "x (mm)", "y (mm)", "Tip trajectory and magnetic force");
+    draw_grid(c, a);
     draw_walls(c, a, m, to_mm);
     // The trajectory first and the reference dashed on top, so both show where they coincide.
     std::vector<glm::vec2> pts;
@@ -244,6 +265,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
       entries.push_back({kActuation, "magnetic force (" + format_value(typical, fu, 2) + " = " +
                                          std::to_string(int(std::lround(nominal))) + " px)"});
     }
+    draw_frame(c, a, "x (mm)", "y (mm)", "Tip trajectory and magnetic force", white);
     legend(c, a, entries, font, true);
     save(c, (fs::path(dir) / "tip_trajectory.png").string(), force, written);
   }
@@ -258,24 +280,29 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     all.insert(all.end(), fx.begin(), fx.end());
     all.insert(all.end(), fy.begin(), fy.end());
     fit_range(all, a.ymin, a.ymax, true);
-    draw_axes(c, a, "time (s)", "magnetic " + force_label, "Actuation (magnetic) force on the robot");
+    draw_grid(c, a);
     if (s.has_actuation) {
       plot_line(c, a, s.t, fx, 2, kSecondary);
       plot_line(c, a, s.t, fy, 2, kTertiary, true);
       plot_line(c, a, s.t, mag, 3, kActuation);
-      legend(c, a, {{kActuation, "|F|"}, {kSecondary, "Fx"}, {kTertiary, "Fy"}}, font);
-    } else {
-      no_data(c, a, "actuation force", font);
     }
+    draw_frame(c, a, "time (s)", "magnetic " + force_label, "Actuation (magnetic) force on the robot", white);
+    if (s.has_actuation)
+      legend(c, a, {{kActuation, "|F|"}, {kSecondary, "Fx"}, {kTertiary, "Fy"}}, font);
+    else
+      no_data(c, a, "actuation force", font);
     save(c, (fs::path(dir) / "actuation_force.png").string(), force, written);
   }
   {  // Whole-body snapshots with contact arrows (Fig. 14).
     c.clear(white);
     Axes a = map_axes(c, source, s, to_mm);
-    draw_axes(c, a, "x (mm)", "y (mm)", "Rod snapshots and contact forces");
+    draw_grid(c, a);
     draw_walls(c, a, m, to_mm);
     constexpr int kSnapshots = 6;
-    const double px_per_n = max_con > 0 ? 0.06 * (a.right - a.left) / max_con : 0;
+    // As in the video: the 95th percentile draws a fixed length, so one spike does not shrink
+    // every arrow to nothing; rarer, larger forces draw longer, up to a cap.
+    const double typical = typical_peak(s.max_contact), nominal = 0.05 * (a.right - a.left);
+    const double px_per_n = typical > 0 ? nominal / typical : 0;
     FrameState f;
     for (int k = 0; k < kSnapshots; ++k) {
       const std::size_t i = (source.frame_count() - 1) * static_cast<std::size_t>(k) / (kSnapshots - 1);
@@ -286,15 +313,21 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
       for (std::size_t n = 0; n < f.node_count(); ++n) pts.push_back(a.map(f.node(n).x() * to_mm, f.node(n).y() * to_mm));
       c.polyline(pts, 3.5f, rod);
       for (std::size_t n = 0; px_per_n > 0 && n < f.node_count() && !f.contact.empty(); ++n) {
-        const glm::vec2 d(float(f.contact[2 * n] * px_per_n), float(-f.contact[2 * n + 1] * px_per_n));
-        if (d.x * d.x + d.y * d.y >= 1) c.arrow(pts[n], pts[n] + d, 2, kContact);
+        glm::vec2 d(float(f.contact[2 * n] * px_per_n), float(-f.contact[2 * n + 1] * px_per_n));
+        const float len = std::sqrt(d.x * d.x + d.y * d.y);
+        if (len > 2.5f * nominal) d *= float(2.5 * nominal) / len;
+        if (len >= 1) c.arrow(pts[n], pts[n] + d, 2, kContact);
       }
       char label[32];
       std::snprintf(label, sizeof label, "t = %.2f s", f.time);
       c.text(label, pts.back() + glm::vec2(6, -6), static_cast<int>(0.8 * font), kInk);
     }
+    draw_frame(c, a, "x (mm)", "y (mm)", "Rod snapshots and contact forces", white);
     std::vector<std::pair<Rgba, std::string>> entries = {{hex(0x3B5BA5), "rod (lighter = earlier)"}};
-    if (px_per_n > 0) entries.push_back({kContact, "contact force (max " + format_value(max_con, fu, 2) + ")"});
+    if (px_per_n > 0)
+      entries.push_back({kContact, "contact force (" + format_value(typical, fu, 2) + " = " +
+                                       std::to_string(int(std::lround(nominal))) + " px, max " +
+                                       format_value(max_con, fu, 2) + ")"});
     legend(c, a, entries, font, true);
     save(c, (fs::path(dir) / "snapshots.png").string(), force, written);
   }
@@ -306,9 +339,10 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     std::vector<double> e;
     for (double v : s.error) e.push_back(v * to_mm);
     fit_range(e, a.ymin, a.ymax, true);
-    draw_axes(c, a, "time (s)", "tip error (mm)", "Tracking error: distance from tip to reference");
+    draw_grid(c, a);
     if (s.has_error) plot_line(c, a, s.t, e, 2.5f, kPath);
-    else no_data(c, a, "tracking error", font);
+    draw_frame(c, a, "time (s)", "tip error (mm)", "Tracking error: distance from tip to reference", white);
+    if (!s.has_error) no_data(c, a, "tracking error", font);
     save(c, (fs::path(dir) / "tracking_error.png").string(), force, written);
   }
   {  // Contact force over time.
@@ -321,14 +355,16 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     std::vector<double> all = mx;
     all.insert(all.end(), tot.begin(), tot.end());
     fit_range(all, a.ymin, a.ymax, true);
-    draw_axes(c, a, "time (s)", "contact " + force_label, "Wall contact force");
+    draw_grid(c, a);
     if (s.has_contact) {
       plot_line(c, a, s.t, tot, 2, kSecondary);
       plot_line(c, a, s.t, mx, 2.5f, kContact);
-      legend(c, a, {{kContact, "largest on one node"}, {kSecondary, "sum over nodes"}}, font);
-    } else {
-      no_data(c, a, "contact force", font);
     }
+    draw_frame(c, a, "time (s)", "contact " + force_label, "Wall contact force", white);
+    if (s.has_contact)
+      legend(c, a, {{kContact, "largest on one node"}, {kSecondary, "sum over nodes"}}, font);
+    else
+      no_data(c, a, "contact force", font);
     save(c, (fs::path(dir) / "contact_force.png").string(), force, written);
   }
   return written;

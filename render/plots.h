@@ -23,9 +23,12 @@ struct Axes {
   void equal_aspect();
 };
 
-// Frame, grid, ticks with labels, axis labels and a title.
-void draw_axes(Canvas& canvas, const Axes& axes, const std::string& xlabel, const std::string& ylabel,
-               const std::string& title);
+// Grid lines, drawn first, under the data.
+void draw_grid(Canvas& canvas, const Axes& axes);
+// Drawn after the data: paints the margins in `page` (clipping the data to the axes), then the
+// frame, ticks with labels, axis labels and the title.
+void draw_frame(Canvas& canvas, const Axes& axes, const std::string& xlabel, const std::string& ylabel,
+                const std::string& title, Rgba page);
 
 // Writes the plots into `dir` and returns their paths. Refuses to overwrite an existing plot
 // unless `force`. Throws InputError on failure.
