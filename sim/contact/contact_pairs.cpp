@@ -38,13 +38,13 @@ ContactGeometry::ContactGeometry(const std::vector<WallSegment>& walls, double r
 void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
                                     const std::function<void(const ContactPair&)>& visit, bool nodes_only) const {
   const int nodes = static_cast<int>(x.size() / 2);
-  std::vector<WallHit> hits;
+  std::vector<int> candidates;
   ContactPair pair;
   for (int i = 0; i < nodes; ++i) {
     const Vec2 p = x.segment<2>(2 * i);
-    wall_field_.near(p, rod_radius_ + reach_, hits);
-    for (const auto& h : hits) {
-      const WallSegment& w = walls_[static_cast<std::size_t>(h.wall)];
+    wall_field_.candidates(p, rod_radius_ + reach_, candidates);
+    for (const int k : candidates) {
+      const WallSegment& w = walls_[static_cast<std::size_t>(k)];
       pair.first_dof = 2 * i;
       pair.is_edge = false;
       pair.geometry = point_segment_distance(p, w.a, w.b, with_hessian);
@@ -58,9 +58,9 @@ void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
     const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
     const double half = 0.5 * (b - a).norm();
     const double radius = std::min(half + rod_radius_ + reach_, corner_field_.max_query_radius());
-    corner_field_.near(0.5 * (a + b), radius, hits);
-    for (const auto& h : hits) {
-      const WallSegment& c = corners_[static_cast<std::size_t>(h.wall)];
+    corner_field_.candidates(0.5 * (a + b), radius, candidates);
+    for (const int k : candidates) {
+      const WallSegment& c = corners_[static_cast<std::size_t>(k)];
       pair.first_dof = 2 * i;
       pair.is_edge = true;
       pair.geometry = point_segment_distance(c.a, a, b, with_hessian);

@@ -67,23 +67,31 @@ WallFrictionModule::WallFrictionModule(const std::vector<WallSegment>& walls, co
                                        const ContactParams& params)
     : params_(params), geometry_(walls, params.rod_radius, params.g_hat, 2.0 * max_edge_length(rod)) {}
 
+const std::vector<WallFrictionModule::LaggedPair>& WallFrictionModule::lagged_pairs(const Eigen::VectorXd& start) const {
+  if (start.size() == cached_start_.size() && start == cached_start_) return cached_pairs_;
+  cached_start_ = start;
+  cached_pairs_.clear();
+  geometry_.for_each_pair(start, false, [&](const ContactPair& pair) {
+    const double lambda = -contact_barrier(pair.gap, params_.g_hat, params_.kappa).first;  // N
+    if (lambda > 0.0) cached_pairs_.push_back({pair.first_dof, lambda, Eigen::Vector2d(-pair.normal.y(), pair.normal.x())});
+  }, /*nodes_only=*/true);
+  return cached_pairs_;
+}
+
 void WallFrictionModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const {
   if (!ctx.start || ctx.dv_dx == 0.0) return;  // friction needs motion: none in statics
   const double eps = params_.slip_velocity;
-  geometry_.for_each_pair(ctx.start->x, false, [&](const ContactPair& pair) {
-    const double lambda = -contact_barrier(pair.gap, params_.g_hat, params_.kappa).first;  // N
-    if (lambda <= 0.0) return;
-    const Eigen::Vector2d tangent(-pair.normal.y(), pair.normal.x());
-    const double vt = tangent.dot(ctx.v->segment<2>(pair.first_dof));
+  for (const LaggedPair& pair : lagged_pairs(ctx.start->x)) {
+    const double vt = pair.tangent.dot(ctx.v->segment<2>(pair.first_dof));
     const double y = std::abs(vt) / eps;
     const double f1 = y < 1.0 ? 2.0 * y - y * y : 1.0;
-    const double scale = params_.friction * lambda;
-    force.segment<2>(pair.first_dof) -= scale * f1 * (vt >= 0.0 ? 1.0 : -1.0) * tangent;
+    const double scale = params_.friction * pair.lambda;
+    force.segment<2>(pair.first_dof) -= scale * f1 * (vt >= 0.0 ? 1.0 : -1.0) * pair.tangent;
     if (stiffness && y < 1.0) {
       const double slope = scale * (2.0 - 2.0 * y) / eps;  // d|F|/d|v_t|
-      stiffness->add_block<2>(pair.first_dof, Eigen::Matrix2d(slope * ctx.dv_dx * tangent * tangent.transpose()));
+      stiffness->add_block<2>(pair.first_dof, Eigen::Matrix2d(slope * ctx.dv_dx * pair.tangent * pair.tangent.transpose()));
     }
-  }, /*nodes_only=*/true);
+  }
 }
 
 }  // namespace vascsim

@@ -41,8 +41,20 @@ class WallFrictionModule : public ForceModule {
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
 
  private:
+  struct LaggedPair {
+    int first_dof;
+    double lambda;            // N, normal force at the start of the step
+    Eigen::Vector2d tangent;  // unit, along the wall
+  };
+  // The pairs at the start of the step. Every Newton iteration of a step asks for the same start
+  // state, so they are found once per step and kept (this makes one module instance unsafe to
+  // share between threads; each run builds its own Model).
+  const std::vector<LaggedPair>& lagged_pairs(const Eigen::VectorXd& start) const;
+
   ContactParams params_;
   ContactGeometry geometry_;
+  mutable Eigen::VectorXd cached_start_;
+  mutable std::vector<LaggedPair> cached_pairs_;
 };
 
 }  // namespace vascsim

@@ -50,6 +50,11 @@ WallDistanceField::WallDistanceField(const std::vector<WallSegment>& walls, doub
     throw std::invalid_argument("WallDistanceField: max_query_radius must be finite and >= 0, got " +
                                 std::to_string(max_query_radius));
   if (walls_.empty()) return;
+  for (const auto& w : walls_) {
+    const Vec2 d = w.b - w.a;
+    const double len2 = d.squaredNorm();
+    axes_.push_back({w.a, d, len2 > 0.0 ? 1.0 / len2 : 0.0, 0.5 * w.thickness});
+  }
 
   // A wall can matter to a point only within reach = thickness/2 + max_query_radius of its segment.
   Vec2 lo = Vec2::Constant(INFINITY), hi = Vec2::Constant(-INFINITY);
@@ -116,6 +121,18 @@ void WallDistanceField::check_radius(double radius) const {
                                 " m exceeds max_query_radius " + std::to_string(max_query_radius_) + " m");
 }
 
+bool WallDistanceField::beyond(int i, const Vec2& p, double radius) const {
+  const Axis& w = axes_[static_cast<std::size_t>(i)];
+  const Vec2 ap = p - w.a;
+  const double t = std::clamp(ap.dot(w.d) * w.inverse_length2, 0.0, 1.0);
+  const double reach = radius + w.half_thickness;
+  // Conservative against wall_hit's own rounding (it divides where this multiplies): a slack
+  // relative to the coordinates' size, so a point exactly on a line wall is never rejected. A
+  // negative reach (radius < -thickness/2) keeps everything for the exact test to decide.
+  const double slack = 1e-20 * (ap.squaredNorm() + w.d.squaredNorm());
+  return reach >= 0.0 && (ap - t * w.d).squaredNorm() > reach * reach * (1.0 + 1e-9) + slack;
+}
+
 bool WallDistanceField::nearest(const Vec2& p, double radius, WallHit& hit) const {
   check_radius(radius);
   const int b = bucket_of(p);
@@ -124,6 +141,7 @@ bool WallDistanceField::nearest(const Vec2& p, double radius, WallHit& hit) cons
   WallHit best;
   for (int k = bucket_begin_[static_cast<std::size_t>(b)]; k < bucket_begin_[static_cast<std::size_t>(b) + 1]; ++k) {
     const int i = bucket_walls_[static_cast<std::size_t>(k)];
+    if (beyond(i, p, radius)) continue;
     const WallHit h = wall_hit(walls_[static_cast<std::size_t>(i)], i, p);
     // Indices ascend within a bucket, so strict < keeps the lowest index on a tie, like the brute force.
     if (h.distance <= radius && (!found || h.distance < best.distance)) {
@@ -142,8 +160,20 @@ void WallDistanceField::near(const Vec2& p, double radius, std::vector<WallHit>&
   if (b < 0) return;
   for (int k = bucket_begin_[static_cast<std::size_t>(b)]; k < bucket_begin_[static_cast<std::size_t>(b) + 1]; ++k) {
     const int i = bucket_walls_[static_cast<std::size_t>(k)];
+    if (beyond(i, p, radius)) continue;
     const WallHit h = wall_hit(walls_[static_cast<std::size_t>(i)], i, p);
     if (h.distance <= radius) hits.push_back(h);
+  }
+}
+
+void WallDistanceField::candidates(const Vec2& p, double radius, std::vector<int>& walls) const {
+  check_radius(radius);
+  walls.clear();
+  const int b = bucket_of(p);
+  if (b < 0) return;
+  for (int k = bucket_begin_[static_cast<std::size_t>(b)]; k < bucket_begin_[static_cast<std::size_t>(b) + 1]; ++k) {
+    const int i = bucket_walls_[static_cast<std::size_t>(k)];
+    if (!beyond(i, p, radius)) walls.push_back(i);
   }
 }
 

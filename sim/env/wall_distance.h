@@ -41,6 +41,10 @@ class WallDistanceField {
   // Every wall whose surface is within `radius` of p, in wall index order; clears `hits` first.
   void near(const Vec2& p, double radius, std::vector<WallHit>& hits) const;
 
+  // A superset of near()'s walls, found without computing any hit: for callers that compute
+  // their own distance (with derivatives) anyway. Clears `walls` first; ascending indices.
+  void candidates(const Vec2& p, double radius, std::vector<int>& walls) const;
+
   // Reference: loop over every wall, no radius limit. False only if `walls` is empty.
   static bool nearest_brute_force(const std::vector<WallSegment>& walls, const Vec2& p, WallHit& hit);
 
@@ -53,9 +57,18 @@ class WallDistanceField {
 
  private:
   int bucket_of(const Vec2& p) const;                // -1 outside the grid
+  // Cheap rejection before wall_hit (no sqrt, no division): true if wall i's surface is surely
+  // farther than radius from p. Most walls of a bucket are, for contact-sized radii.
+  bool beyond(int i, const Vec2& p, double radius) const;
+  struct Axis {
+    Vec2 a, d;               // m, segment start and b - a
+    double inverse_length2;  // 1/m^2, 0 for a point wall
+    double half_thickness;   // m
+  };
   void check_radius(double radius) const;
 
   std::vector<WallSegment> walls_;
+  std::vector<Axis> axes_;         // per wall, for beyond()
   double max_query_radius_ = 0.0;  // m
   Vec2 origin_ = Vec2::Zero();     // m, lower-left corner of bucket (0, 0)
   double cell_ = 1.0;              // m, bucket edge
