@@ -3,7 +3,9 @@
 // PSD projection is inactive, and the step cap keeps every gap open.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <tuple>
 
 #include "sim/contact/wall_contact.h"
 #include "sim/control/tip_magnet_energy.h"
@@ -50,6 +52,40 @@ TEST(WallContact, ForceIsMinusEnergyGradientForNodesAndCorners) {
   // The corner above the middle node pushes it down, the floor pushes the end nodes up.
   EXPECT_LT(f[3], 0.0);
   EXPECT_GT(f[1], 0.0);
+}
+
+// The neighbour lists a ContactGeometry keeps between calls must never hide a pair: a rod
+// wandering through a thick-walled maze, in small and large moves, sees exactly the pairs a
+// fresh geometry (empty lists) finds at every position.
+TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
+  const std::vector<WallSegment> walls = {{Vec2(0, 0), Vec2(0.2, 0), 0.02},    {Vec2(0.2, 0), Vec2(0.2, 0.2), 0.02},
+                                          {Vec2(0.1, 0.05), Vec2(0.1, 0.15), 0.02}, {Vec2(0, 0.2), Vec2(0.2, 0.2), 0.0},
+                                          {Vec2(0.05, 0.1), Vec2(0.05, 0.1), 0.01}};
+  const double radius = 0.002, reach = 0.001, edge = 0.01;
+  const ContactGeometry reused(walls, radius, reach, edge);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), jiggle(-1.0, 1.0);
+  const int nodes = 8;
+  Eigen::VectorXd x(2 * nodes);
+  int pairs_seen = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    if (trial % 300 == 0) {  // a fresh rod somewhere in the box
+      const Vec2 start(0.02 + 0.16 * unit(rng), 0.02 + 0.16 * unit(rng));
+      const double angle = 6.283 * unit(rng);
+      for (int i = 0; i < nodes; ++i) x.segment<2>(2 * i) = start + 0.9 * edge * i * Vec2(std::cos(angle), std::sin(angle));
+    }
+    const double size = trial % 7 == 0 ? 4e-3 : 2e-4;  // m, mostly small moves, some beyond the skin
+    for (int i = 0; i < 2 * nodes; ++i) x[i] += size * jiggle(rng);
+    std::vector<std::tuple<int, bool, double>> got, want;
+    reused.for_each_pair(x, false, [&](const ContactPair& p) { got.emplace_back(p.first_dof, p.is_edge, p.gap); });
+    ContactGeometry(walls, radius, reach, edge)
+        .for_each_pair(x, false, [&](const ContactPair& p) { want.emplace_back(p.first_dof, p.is_edge, p.gap); });
+    std::sort(got.begin(), got.end());
+    std::sort(want.begin(), want.end());
+    ASSERT_EQ(got, want) << "trial " << trial;
+    pairs_seen += static_cast<int>(want.size());
+  }
+  EXPECT_GT(pairs_seen, 100) << "the walk must actually touch walls";
 }
 
 TEST(WallContact, StiffnessMatchesForceJacobianOnAFlatWall) {

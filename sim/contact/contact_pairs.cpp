@@ -31,20 +31,52 @@ ContactGeometry::ContactGeometry(const std::vector<WallSegment>& walls, double r
       rod_radius_(rod_radius),
       reach_(reach),
       max_edge_length_(max_edge_length),
+      skin_(rod_radius + reach),
       // Queries reach a little beyond the barrier so max_step_fraction can see walls ahead.
       wall_field_(walls, 4.0 * (rod_radius + reach) + max_edge_length),
       corner_field_(corners_, 4.0 * (rod_radius + reach) + max_edge_length) {}
 
+void ContactGeometry::refresh_neighbours(const Eigen::VectorXd& x) const {
+  NeighbourCache& c = cache_;
+  const int nodes = static_cast<int>(x.size() / 2);
+  if (c.anchor.size() == x.size()) {
+    bool moved = false;
+    for (int i = 0; i < nodes && !moved; ++i) moved = (x.segment<2>(2 * i) - c.anchor.segment<2>(2 * i)).squaredNorm() > 0.25 * skin_ * skin_;
+    if (!moved) return;
+  }
+  // Every pair within reach at any x whose nodes lie within skin/2 of the anchor is listed: a
+  // node (or any point of an edge) moves at most skin/2, so its distance to a wall changes by at
+  // most that much.
+  c.anchor = x;
+  c.node_begin.assign(1, 0);
+  c.node_walls.clear();
+  c.edge_begin.assign(1, 0);
+  c.edge_corners.clear();
+  std::vector<int> found;
+  for (int i = 0; i < nodes; ++i) {
+    wall_field_.candidates(x.segment<2>(2 * i), rod_radius_ + reach_ + skin_, found);
+    c.node_walls.insert(c.node_walls.end(), found.begin(), found.end());
+    c.node_begin.push_back(static_cast<int>(c.node_walls.size()));
+  }
+  for (int i = 0; i + 1 < nodes; ++i) {
+    const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
+    const double radius = std::min(0.5 * (b - a).norm() + rod_radius_ + reach_ + skin_, corner_field_.max_query_radius());
+    corner_field_.candidates(0.5 * (a + b), radius, found);
+    c.edge_corners.insert(c.edge_corners.end(), found.begin(), found.end());
+    c.edge_begin.push_back(static_cast<int>(c.edge_corners.size()));
+  }
+}
+
 void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
                                     const std::function<void(const ContactPair&)>& visit, bool nodes_only) const {
   const int nodes = static_cast<int>(x.size() / 2);
-  std::vector<int> candidates;
+  refresh_neighbours(x);
+  const NeighbourCache& c = cache_;
   ContactPair pair;
   for (int i = 0; i < nodes; ++i) {
     const Vec2 p = x.segment<2>(2 * i);
-    wall_field_.candidates(p, rod_radius_ + reach_, candidates);
-    for (const int k : candidates) {
-      const WallSegment& w = walls_[static_cast<std::size_t>(k)];
+    for (int k = c.node_begin[static_cast<std::size_t>(i)]; k < c.node_begin[static_cast<std::size_t>(i) + 1]; ++k) {
+      const WallSegment& w = walls_[static_cast<std::size_t>(c.node_walls[static_cast<std::size_t>(k)])];
       pair.first_dof = 2 * i;
       pair.is_edge = false;
       pair.geometry = point_segment_distance(p, w.a, w.b, with_hessian);
@@ -56,15 +88,12 @@ void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
   if (nodes_only) return;
   for (int i = 0; i + 1 < nodes; ++i) {
     const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
-    const double half = 0.5 * (b - a).norm();
-    const double radius = std::min(half + rod_radius_ + reach_, corner_field_.max_query_radius());
-    corner_field_.candidates(0.5 * (a + b), radius, candidates);
-    for (const int k : candidates) {
-      const WallSegment& c = corners_[static_cast<std::size_t>(k)];
+    for (int k = c.edge_begin[static_cast<std::size_t>(i)]; k < c.edge_begin[static_cast<std::size_t>(i) + 1]; ++k) {
+      const WallSegment& corner = corners_[static_cast<std::size_t>(c.edge_corners[static_cast<std::size_t>(k)])];
       pair.first_dof = 2 * i;
       pair.is_edge = true;
-      pair.geometry = point_segment_distance(c.a, a, b, with_hessian);
-      pair.gap = pair.geometry.distance - 0.5 * c.thickness - rod_radius_;
+      pair.geometry = point_segment_distance(corner.a, a, b, with_hessian);
+      pair.gap = pair.geometry.distance - 0.5 * corner.thickness - rod_radius_;
       pair.normal = -pair.geometry.gradient.head<2>();  // from the corner towards the edge
       if (pair.gap < reach_) visit(pair);
     }

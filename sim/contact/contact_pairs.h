@@ -43,11 +43,25 @@ class ContactGeometry {
   double rod_radius() const { return rod_radius_; }
 
  private:
+  // Verlet neighbour lists: the walls near each node and the corners near each edge, found in
+  // the grids for an anchor configuration with a margin `skin_`, and reused until some node has
+  // moved skin/2 from the anchor. A step moves the rod far less than that, so the Newton
+  // iterations of many steps share one grid search. Mutable cache: one instance must not be
+  // shared between threads (each run builds its own).
+  struct NeighbourCache {
+    Eigen::VectorXd anchor;               // m, positions the lists were built for
+    std::vector<int> node_begin, node_walls;    // CSR: walls near node i
+    std::vector<int> edge_begin, edge_corners;  // CSR: corners near edge i
+  };
+  void refresh_neighbours(const Eigen::VectorXd& x) const;
+
   std::vector<WallSegment> walls_;
   std::vector<WallSegment> corners_;  // zero-length capsules at the wall ends, deduplicated
   double rod_radius_;
   double reach_;
   double max_edge_length_;
+  double skin_;  // m, neighbour-list margin
+  mutable NeighbourCache cache_;
   WallDistanceField wall_field_;
   WallDistanceField corner_field_;
 };
