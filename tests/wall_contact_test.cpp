@@ -55,27 +55,33 @@ TEST(WallContact, ForceIsMinusEnergyGradientForNodesAndCorners) {
 }
 
 // The neighbour lists a ContactGeometry keeps between calls must never hide a pair: a rod
-// wandering through a thick-walled maze, in small and large moves, sees exactly the pairs a
-// fresh geometry (empty lists) finds at every position.
+// wandering through a thick-walled maze, in small and large moves, sees exactly the pairs and
+// the step cap that a fresh geometry (empty lists) finds at every position.
 TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
-  const std::vector<WallSegment> walls = {{Vec2(0, 0), Vec2(0.2, 0), 0.02},    {Vec2(0.2, 0), Vec2(0.2, 0.2), 0.02},
-                                          {Vec2(0.1, 0.05), Vec2(0.1, 0.15), 0.02}, {Vec2(0, 0.2), Vec2(0.2, 0.2), 0.0},
-                                          {Vec2(0.05, 0.1), Vec2(0.05, 0.1), 0.01}};
+  std::vector<WallSegment> walls = {{Vec2(0, 0), Vec2(0.2, 0), 0.02}, {Vec2(0.2, 0), Vec2(0.2, 0.2), 0.02},
+                                    {Vec2(0.1, 0.05), Vec2(0.1, 0.15), 0.02}, {Vec2(0, 0.2), Vec2(0.2, 0.2), 0.0}};
+  for (int i = 1; i < 8; ++i)  // round pillars: corners that only edges touch
+    for (int j = 1; j < 8; ++j) walls.push_back({Vec2(0.025 * i, 0.025 * j), Vec2(0.025 * i, 0.025 * j), 0.006});
   const double radius = 0.002, reach = 0.001, edge = 0.01;
   const ContactGeometry reused(walls, radius, reach, edge);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0), jiggle(-1.0, 1.0);
   const int nodes = 8;
   Eigen::VectorXd x(2 * nodes);
-  int pairs_seen = 0;
+  int pairs_seen = 0, edge_pairs_seen = 0;
+  Eigen::VectorXd shape(2 * nodes);
   for (int trial = 0; trial < 3000; ++trial) {
     if (trial % 300 == 0) {  // a fresh rod somewhere in the box
       const Vec2 start(0.02 + 0.16 * unit(rng), 0.02 + 0.16 * unit(rng));
       const double angle = 6.283 * unit(rng);
-      for (int i = 0; i < nodes; ++i) x.segment<2>(2 * i) = start + 0.9 * edge * i * Vec2(std::cos(angle), std::sin(angle));
+      for (int i = 0; i < nodes; ++i) shape.segment<2>(2 * i) = start + 0.9 * edge * i * Vec2(std::cos(angle), std::sin(angle));
     }
-    const double size = trial % 7 == 0 ? 4e-3 : 2e-4;  // m, mostly small moves, some beyond the skin
-    for (int i = 0; i < 2 * nodes; ++i) x[i] += size * jiggle(rng);
+    // The rod drifts as a whole (edges keep their length, as a rod's do), mostly in small moves
+    // and sometimes beyond the lists' margin, with a little independent noise per node.
+    const double size = trial % 7 == 0 ? 4e-3 : 2e-4;  // m
+    const Vec2 drift(size * jiggle(rng), size * jiggle(rng));
+    for (int i = 0; i < nodes; ++i) shape.segment<2>(2 * i) += drift;
+    for (int i = 0; i < 2 * nodes; ++i) x[i] = shape[i] + 2e-4 * jiggle(rng);
     std::vector<std::tuple<int, bool, double>> got, want;
     reused.for_each_pair(x, false, [&](const ContactPair& p) { got.emplace_back(p.first_dof, p.is_edge, p.gap); });
     ContactGeometry(walls, radius, reach, edge)
@@ -83,9 +89,17 @@ TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
     std::sort(got.begin(), got.end());
     std::sort(want.begin(), want.end());
     ASSERT_EQ(got, want) << "trial " << trial;
+    // The step cap reads the same lists for small moves and the grids for large ones.
+    Eigen::VectorXd dx(2 * nodes);
+    const double move = trial % 3 == 0 ? 3e-3 : 1.7e-3;  // m, beyond and up to the lists' margin
+    for (int i = 0; i < 2 * nodes; ++i) dx[i] = move * jiggle(rng);
+    ASSERT_EQ(reused.max_step_fraction(x, dx, 0.5), ContactGeometry(walls, radius, reach, edge).max_step_fraction(x, dx, 0.5))
+        << "trial " << trial;
     pairs_seen += static_cast<int>(want.size());
+    for (const auto& pair : want) edge_pairs_seen += std::get<1>(pair);
   }
   EXPECT_GT(pairs_seen, 100) << "the walk must actually touch walls";
+  EXPECT_GT(edge_pairs_seen, 100) << "and wall corners between nodes";
 }
 
 TEST(WallContact, StiffnessMatchesForceJacobianOnAFlatWall) {

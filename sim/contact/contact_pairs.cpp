@@ -46,7 +46,8 @@ void ContactGeometry::refresh_neighbours(const Eigen::VectorXd& x) const {
   }
   // Every pair within reach at any x whose nodes lie within skin/2 of the anchor is listed: a
   // node (or any point of an edge) moves at most skin/2, so its distance to a wall changes by at
-  // most that much.
+  // most that much. max_step_fraction also reads the lists for moves up to reach + skin/2; an
+  // edge's midpoint and half-length each drift by skin/2, hence the edges' extra skin/2.
   c.anchor = x;
   c.node_begin.assign(1, 0);
   c.node_walls.clear();
@@ -60,7 +61,7 @@ void ContactGeometry::refresh_neighbours(const Eigen::VectorXd& x) const {
   }
   for (int i = 0; i + 1 < nodes; ++i) {
     const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
-    const double radius = std::min(0.5 * (b - a).norm() + rod_radius_ + reach_ + skin_, corner_field_.max_query_radius());
+    const double radius = std::min(0.5 * (b - a).norm() + rod_radius_ + reach_ + 1.5 * skin_, corner_field_.max_query_radius());
     corner_field_.candidates(0.5 * (a + b), radius, found);
     c.edge_corners.insert(c.edge_corners.end(), found.begin(), found.end());
     c.edge_begin.push_back(static_cast<int>(c.edge_corners.size()));
@@ -128,25 +129,51 @@ double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen:
     const double move = dx.segment<2>(2 * i).norm();
     if (move > reach_limit) alpha = std::min(alpha, reach_limit / move);
   }
+  // Moves within the neighbour lists' margin (the usual Newton update) need no grid search: x is
+  // within skin/2 of the anchor, so every wall within move + r of a node is on its list.
+  refresh_neighbours(x);
+  const NeighbourCache& c = cache_;
+  const double listed_move = reach_ + 0.5 * skin_;
   std::vector<WallHit> hits;
   WallHit hit;
   for (int i = 0; i < nodes; ++i) {
     const double move = alpha * dx.segment<2>(2 * i).norm();
     if (move == 0.0) continue;
-    if (!wall_field_.nearest(x.segment<2>(2 * i), move + rod_radius_, hit)) continue;
-    const double gap = hit.distance - rod_radius_;
+    const Vec2 p = x.segment<2>(2 * i);
+    double gap = std::numeric_limits<double>::infinity();
+    if (move <= listed_move) {
+      for (int k = c.node_begin[static_cast<std::size_t>(i)]; k < c.node_begin[static_cast<std::size_t>(i) + 1]; ++k) {
+        const int w = c.node_walls[static_cast<std::size_t>(k)];
+        const double distance = wall_hit(walls_[static_cast<std::size_t>(w)], w, p).distance;
+        if (distance <= move + rod_radius_) gap = std::min(gap, distance - rod_radius_);  // as nearest() would
+      }
+    } else if (wall_field_.nearest(p, move + rod_radius_, hit)) {
+      gap = hit.distance - rod_radius_;
+    }
     // The gap shrinks at most as fast as the node moves: keep a `safety` share of it.
     if (move > safety * gap) alpha = std::min(alpha, safety * gap / dx.segment<2>(2 * i).norm());
   }
+  std::vector<int> listed;
   for (int i = 0; i + 1 < nodes; ++i) {
     const double move = alpha * std::max(dx.segment<2>(2 * i).norm(), dx.segment<2>(2 * i + 2).norm());
     if (move == 0.0) continue;
     const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
+    const int* first = nullptr;
+    const int* last = nullptr;
+    if (move <= listed_move) {
+      first = c.edge_corners.data() + c.edge_begin[static_cast<std::size_t>(i)];
+      last = c.edge_corners.data() + c.edge_begin[static_cast<std::size_t>(i) + 1];
+    } else {
+      corner_field_.candidates(0.5 * (a + b), std::min(0.5 * (b - a).norm() + move + rod_radius_,
+                                                       corner_field_.max_query_radius()), listed);
+      first = listed.data();
+      last = listed.data() + listed.size();
+    }
     const double radius = std::min(0.5 * (b - a).norm() + move + rod_radius_, corner_field_.max_query_radius());
-    corner_field_.near(0.5 * (a + b), radius, hits);
-    for (const auto& h : hits) {
-      const WallSegment& c = corners_[static_cast<std::size_t>(h.wall)];
-      const double gap = point_segment_distance(c.a, a, b, false).distance - 0.5 * c.thickness - rod_radius_;
+    for (const int* k = first; k != last; ++k) {
+      const WallSegment& corner = corners_[static_cast<std::size_t>(*k)];
+      if (wall_hit(corner, *k, 0.5 * (a + b)).distance > radius) continue;  // as near() would
+      const double gap = point_segment_distance(corner.a, a, b, false).distance - 0.5 * corner.thickness - rod_radius_;
       if (move > safety * gap) alpha = std::min(alpha, safety * gap * alpha / move);
     }
   }
