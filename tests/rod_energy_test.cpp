@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 
 #include <Eigen/Geometry>
 
 #include "sim/rod/elastic_energy.h"
+#include "sim/rod/rod_model.h"
+#include "sim/step/elastic_assembly.h"
 
 namespace vascsim {
 namespace {
@@ -136,6 +139,41 @@ TEST(ElasticEnergy, CurvatureIsTwoTanHalfTurn) {
   // A right angle: phi = pi/2, kappa = 2 tan(pi/4) = 2, counter-clockwise positive.
   EXPECT_NEAR(discrete_curvature(Vec2(0, 0), Vec2(1, 0), Vec2(1, 1)), 2.0, 1e-15);
   EXPECT_NEAR(discrete_curvature(Vec2(0, 0), Vec2(1, 0), Vec2(1, -1)), -2.0, 1e-15);
+}
+
+// The hand-written assembly (sim/step/elastic_assembly.cpp) against the sum of the element
+// functions tested above, on a rod with uneven edges, rest curvature and a random bent shape.
+TEST(ElasticAssembly, EqualsTheSumOfTheElementFunctions) {
+  RodSpec spec;
+  spec.nodes = 9;
+  ShapeSpec shape;
+  shape.rest_curvature = 3.0;
+  RodModel rod = build_rod_model(spec, shape, ClampKind::kNone);
+  std::srand(5);
+  for (int e = 0; e + 1 < rod.nodes; ++e) rod.rest_length[e] *= 1.0 + 0.2 * (std::rand() / double(RAND_MAX) - 0.5);
+  Eigen::VectorXd x = rod.x_initial + 0.01 * Eigen::VectorXd::Random(2 * rod.nodes);
+  const int dofs = 2 * rod.nodes;
+
+  Eigen::VectorXd want_gradient = Eigen::VectorXd::Zero(dofs);
+  Eigen::MatrixXd want_hessian = Eigen::MatrixXd::Zero(dofs, dofs);
+  for (int e = 0; e + 1 < rod.nodes; ++e) {
+    const StretchElement s = stretch_energy(node(x, e), node(x, e + 1), rod.ea, rod.rest_length[e]);
+    want_gradient.segment<4>(2 * e) += s.gradient;
+    want_hessian.block<4, 4>(2 * e, 2 * e) += s.hessian;
+  }
+  for (int i = 1; i + 1 < rod.nodes; ++i) {
+    const BendElement b = bend_energy(node(x, i - 1), node(x, i), node(x, i + 1), rod.ei, rod.voronoi[i], rod.rest_kappa[i]);
+    want_gradient.segment<6>(2 * i - 2) += b.gradient;
+    want_hessian.block<6, 6>(2 * i - 2, 2 * i - 2) += b.hessian;
+  }
+
+  ElasticScratch scratch(rod);
+  Eigen::VectorXd gradient(dofs);
+  BandedMatrix hessian(dofs);
+  assemble_elastic(rod, x, scratch, gradient, &hessian);
+  EXPECT_LT((gradient - want_gradient).lpNorm<Eigen::Infinity>(), 1e-10 * want_gradient.lpNorm<Eigen::Infinity>());
+  EXPECT_LT((hessian.to_dense() - want_hessian).lpNorm<Eigen::Infinity>(), 1e-10 * want_hessian.lpNorm<Eigen::Infinity>());
+  ASSERT_GT(std::abs(want_gradient[5]), 0.0) << "the shape must be stressed";
 }
 
 }  // namespace

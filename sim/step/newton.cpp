@@ -3,12 +3,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sim/rod/elastic_energy.h"
 #include "sim/step/banded_ldlt.h"
 
 namespace vascsim {
 
-Workspace::Workspace(const Model& model) : jacobian(model.dofs()) {
+Workspace::Workspace(const Model& model) : jacobian(model.dofs()), elastic(model.rod) {
   const int n = model.dofs();
   for (Eigen::VectorXd* v : {&residual, &gradient, &force, &x, &v, &dx, &x_trial, &x_hat, &v_hat, &target})
     v->setZero(n);
@@ -16,28 +15,6 @@ Workspace::Workspace(const Model& model) : jacobian(model.dofs()) {
 }
 
 namespace {
-
-// grad E and Hess E of all stretching edges and bending hinges, straight into band storage.
-// `flatten` makes GCC inline the element functions here (it declined to on its own, and the call
-// cost showed in profiles of the N = 1000 iteration).
-#if defined(__GNUC__)
-__attribute__((flatten))
-#endif
-void assemble_elastic(const RodModel& rod, const Eigen::VectorXd& x, Eigen::VectorXd& gradient, BandedMatrix* hess) {
-  const int n = rod.nodes;
-  gradient.setZero();
-  for (int e = 0; e + 1 < n; ++e) {
-    const StretchElement s = stretch_energy(x.segment<2>(2 * e), x.segment<2>(2 * e + 2), rod.ea, rod.rest_length[e]);
-    gradient.segment<4>(2 * e) += s.gradient;
-    if (hess) hess->add_block<4>(2 * e, s.hessian);
-  }
-  for (int i = 1; i + 1 < n; ++i) {
-    const BendElement b = bend_energy(x.segment<2>(2 * i - 2), x.segment<2>(2 * i), x.segment<2>(2 * i + 2), rod.ei,
-                                      rod.voronoi[i], rod.rest_kappa[i]);
-    gradient.segment<6>(2 * i - 2) += b.gradient;
-    if (hess) hess->add_block<6>(2 * i - 2, b.hessian);
-  }
-}
 
 double norm_inf_free(const Eigen::VectorXd& r, const std::vector<char>& fixed) {
   double m = 0.0;
@@ -76,7 +53,7 @@ double assemble(const Model& model, const NewtonProblem& p, const Eigen::VectorX
   } else {
     ws.v.setZero();
   }
-  assemble_elastic(model.rod, x, ws.gradient, jac);
+  assemble_elastic(model.rod, x, ws.elastic, ws.gradient, jac);
 
   ws.force.setZero();
   if (!model.forces.empty()) {

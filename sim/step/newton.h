@@ -18,6 +18,7 @@
 
 #include "sim/step/banded_matrix.h"
 #include "sim/step/controls.h"
+#include "sim/step/elastic_assembly.h"
 #include "sim/step/model.h"
 #include "sim/step/state.h"
 
@@ -32,6 +33,7 @@ struct Workspace {
   Eigen::VectorXd force;     // (2N), N, sum of the modules' forces
   Eigen::VectorXd x, v, dx, x_trial, x_hat, v_hat, target;  // (2N)
   std::vector<char> fixed;   // (2N), 1 for a prescribed degree of freedom
+  ElasticScratch elastic;
 };
 
 // One nonlinear solve. x_hat, v_hat and target are read from the Workspace.
