@@ -39,19 +39,6 @@ json grid_json(const GridMaze& grid, const std::vector<Cell>& path) {
           {"path_cells", cells}};
 }
 
-}  // namespace
-
-std::string maze_document_unlabelled(const Scene& scene);
-
-std::string maze_document(const Scene& scene) {
-  try {
-    return maze_document_unlabelled(scene);
-  } catch (const InputError& e) {
-    // The environment code knows the JSON path, not the file.
-    throw InputError((scene.file.empty() ? std::string("built-in scene") : scene.file) + ": " + e.what());
-  }
-}
-
 std::string maze_document_unlabelled(const Scene& scene) {
   const Environment env = build_environment(scene.maze);
   const GridMaze grid = env.grid ? *env.grid : grid_from_walls(scene.maze);
@@ -80,6 +67,17 @@ std::string maze_document_unlabelled(const Scene& scene) {
                  {"duration", trajectory.duration()},
                  {"samples", polyline(trajectory.sample(1e-4))}};
   return doc.dump(1) + "\n";
+}
+
+}  // namespace
+
+std::string maze_document(const Scene& scene) {
+  try {
+    return maze_document_unlabelled(scene);
+  } catch (const InputError& e) {
+    // The environment code knows the JSON path, not the file.
+    throw InputError((scene.file.empty() ? std::string("built-in scene") : scene.file) + ": " + e.what());
+  }
 }
 
 }  // namespace vascsim

@@ -126,12 +126,7 @@ bool Run::advance(double dt) {
 }
 
 Eigen::VectorXd Run::channel_force(const std::string& name, const Controls& controls) const {
-  ForceContext ctx;
-  ctx.t = state_.t;
-  ctx.x = &state_.x;
-  ctx.v = &state_.v;
-  ctx.controls = &controls;
-  ctx.start = &state_;
+  const ForceContext ctx = ForceContext::at(state_, controls);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model_.dofs());
   for (const auto& m : model_.forces)
     if (m->channel() == name) m->add(ctx, f, nullptr);

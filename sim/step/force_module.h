@@ -10,7 +10,8 @@
 // exact Jacobian is not symmetric (friction) adds a symmetric approximation: Newton then
 // converges linearly but still to the right answer, since convergence is judged on the residual.
 // Modules are immutable (const): per-step inputs come in ForceContext (time, controls, the state
-// at the start of the step for lagged quantities), never from scratch members.
+// at the start of the step for lagged quantities). The only members that change are caches
+// that depend on nothing but those inputs (contact neighbour lists, friction's lagged pairs).
 #pragma once
 
 #include <Eigen/Core>
@@ -31,6 +32,18 @@ struct ForceContext {
                                           // applied loads (gravity, point loads) multiply by it
   const Controls* controls = nullptr;
   const State* start = nullptr;           // state at the start of the step
+
+  // The context of a committed state, for the forces acting on it (a frame, a predictor): its
+  // own time, positions and velocities, and itself as the start of the step.
+  static ForceContext at(const State& state, const Controls& controls) {
+    ForceContext ctx;
+    ctx.t = state.t;
+    ctx.x = &state.x;
+    ctx.v = &state.v;
+    ctx.controls = &controls;
+    ctx.start = &state;
+    return ctx;
+  }
 };
 
 class ForceModule {

@@ -23,6 +23,19 @@ double norm_inf_free(const Eigen::VectorXd& r, const std::vector<char>& fixed) {
   return m;
 }
 
+// The force modules' view of a Newton iterate x with implied velocities v.
+ForceContext context_of(const NewtonProblem& p, const Eigen::VectorXd& x, const Eigen::VectorXd& v) {
+  ForceContext ctx;
+  ctx.t = p.t;
+  ctx.x = &x;
+  ctx.v = &v;
+  ctx.dv_dx = p.c;
+  ctx.load_scale = p.load_scale;
+  ctx.controls = p.controls;
+  ctx.start = p.start;
+  return ctx;
+}
+
 std::string format(const char* fmt, double a, double b = 0.0) {
   char buf[200];
   std::snprintf(buf, sizeof buf, fmt, a, b);
@@ -57,14 +70,7 @@ double assemble(const Model& model, const NewtonProblem& p, const Eigen::VectorX
 
   ws.force.setZero();
   if (!model.forces.empty()) {
-    ForceContext ctx;
-    ctx.t = p.t;
-    ctx.x = &x;
-    ctx.v = &ws.v;
-    ctx.dv_dx = p.c;
-    ctx.load_scale = p.load_scale;
-    ctx.controls = p.controls;
-    ctx.start = p.start;
+    const ForceContext ctx = context_of(p, x, ws.v);
     for (const auto& f : model.forces) f->add(ctx, ws.force, jac);
   }
 
@@ -143,14 +149,7 @@ NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace
     // Modules may cap the first trial (a barrier must never see a closed gap).
     double alpha = 1.0;
     if (!model.forces.empty()) {
-      ForceContext ctx;
-      ctx.t = p.t;
-      ctx.x = &ws.x;
-      ctx.v = &ws.v;
-      ctx.dv_dx = p.c;
-      ctx.load_scale = p.load_scale;
-      ctx.controls = p.controls;
-      ctx.start = p.start;
+      const ForceContext ctx = context_of(p, ws.x, ws.v);
       for (const auto& f : model.forces) alpha = std::min(alpha, f->max_step_fraction(ctx, ws.dx));
       if (!(alpha > 0.0)) {
         out.failure = "a force module allows no step along the Newton direction";

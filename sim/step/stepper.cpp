@@ -49,12 +49,7 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
     if (ws.fixed[d]) ws.dx[static_cast<Eigen::Index>(d)] = ws.target[static_cast<Eigen::Index>(d)] - state.x[static_cast<Eigen::Index>(d)];
   double alpha = 1.0;
   if (!model.forces.empty()) {
-    ForceContext ctx;
-    ctx.t = state.t;
-    ctx.x = &state.x;
-    ctx.v = &state.v;
-    ctx.controls = &controls;
-    ctx.start = &state;
+    const ForceContext ctx = ForceContext::at(state, controls);
     for (const auto& f : model.forces) alpha = std::min(alpha, f->max_step_fraction(ctx, ws.dx));
   }
   ws.x = state.x + alpha * ws.dx;
