@@ -102,6 +102,31 @@ TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
   EXPECT_GT(edge_pairs_seen, 100) << "and wall corners between nodes";
 }
 
+// A node sliding along a wall it presses on feels kinetic friction mu * N against its motion,
+// also when asked at a committed state (ForceContext::at, dv_dx = 0): that is how frames are
+// logged, and a log once showed zero friction throughout a run whose rod slid on walls.
+TEST(WallFriction, OpposesSlidingAtACommittedState) {
+  const RodModel rod = three_node_rod();
+  const ContactParams params{2e-3, 1e-3, 0.01, 0.3, 1e-4};
+  const std::vector<WallSegment> floor = {{Vec2(-0.05, -0.0025), Vec2(0.05, -0.0025), 0.0}};
+  const WallContactModule contact(floor, rod, params);
+  const WallFrictionModule friction(floor, rod, params);
+  State state;
+  state.x.resize(6);
+  state.x << 0.0, 0.0003, 0.0098, 0.003, 0.0198, 0.003;  // node 0 within reach of the floor
+  state.v.setZero(6);
+  state.v[0] = 0.01;  // m/s along +x, far above the slip velocity
+  const Controls controls;
+  const ForceContext ctx = ForceContext::at(state, controls);
+  Eigen::VectorXd normal = Eigen::VectorXd::Zero(6), tangential = Eigen::VectorXd::Zero(6);
+  contact.add(ctx, normal, nullptr);
+  friction.add(ctx, tangential, nullptr);
+  ASSERT_GT(normal[1], 0.0) << "the floor must push node 0 up";
+  EXPECT_NEAR(tangential[0], -0.3 * normal[1], 1e-12 * normal[1]);
+  EXPECT_EQ(tangential[1], 0.0);
+  EXPECT_EQ(tangential.tail<4>().norm(), 0.0) << "nodes 1 and 2 touch nothing";
+}
+
 TEST(WallContact, StiffnessMatchesForceJacobianOnAFlatWall) {
   // Node against a straight wall: hess d = 0, so no projection, and K = -dF/dx exactly.
   const RodModel rod = three_node_rod();

@@ -79,7 +79,9 @@ const std::vector<WallFrictionModule::LaggedPair>& WallFrictionModule::lagged_pa
 }
 
 void WallFrictionModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const {
-  if (!ctx.start || ctx.dv_dx == 0.0) return;  // friction needs motion: none in statics
+  // Friction opposes sliding: with v = 0 (statics) f1(0) = 0 and it vanishes by itself. Not
+  // skipped when dv_dx = 0, which is also how a frame's forces at a committed state are asked for.
+  if (!ctx.start) return;
   const double eps = params_.slip_velocity;
   for (const LaggedPair& pair : lagged_pairs(ctx.start->x)) {
     const double vt = pair.tangent.dot(ctx.v->segment<2>(pair.first_dof));
