@@ -44,6 +44,8 @@ const BadScene kBadScenes[] = {
      "/solver/mode: expected \"dynamic\" in a maze scene (static equilibrium has no trajectory to follow), got \"static\""},
     {"static_ramp", R"({"maze": null, "solver": {"mode": "static"}, "loads": {"point": [{"force": [0, 1], "profile": "ramp"}]}})",
      "/loads/point/0/profile: expected \"constant\" with solver mode \"static\", got \"ramp\""},
+    {"tangential_drag_on_tip", R"({"loads": {"drag": {"enabled": true, "area": "tip", "tangential_coefficient": 0.1}}})",
+     "/loads/drag/tangential_coefficient: expected area \"nodes\" for a tangential coefficient (the tip's frontal drag has one), got 0.1"},
 };
 
 class SceneErrors : public ::testing::TestWithParam<BadScene> {};
@@ -78,7 +80,7 @@ TEST(SceneFiles, MissingFileAndInvalidJson) {
 }
 
 TEST(SceneFiles, ShippedScenesAreValid) {
-  for (const char* name : {"scenes/maze_default.json", "scenes/paper_maze.json"}) {
+  for (const char* name : {"scenes/maze_default.json", "scenes/paper_maze.json", "scenes/maze_body_drag.json"}) {
     const std::string dir = fresh_temp_dir("shipped");
     const CommandResult r = run_vascsim("maze --scene " + source_path(name) + " --out " + dir + "/m.json");
     EXPECT_EQ(r.exit_code, 0) << name << ": " << r.output;

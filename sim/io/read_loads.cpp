@@ -36,6 +36,11 @@ void read_loads(FieldReader& in, LoadSpec& out) {
     out.drag.drag_coefficient = d.number("drag_coefficient", out.drag.drag_coefficient, 0.0, 1e3);
     const std::string area = d.choice("area", out.drag.area == DragArea::kNodes ? "nodes" : "tip", {"nodes", "tip"});
     out.drag.area = area == "tip" ? DragArea::kTipFrontal : DragArea::kNodes;
+    // The paper's frontal tip drag has one coefficient; a second one there would be silently unused.
+    if (out.drag.area == DragArea::kTipFrontal && d.has("tangential_coefficient"))
+      d.fail("tangential_coefficient", "area \"nodes\" for a tangential coefficient (the tip's frontal drag has one)",
+             *d.raw("tangential_coefficient"));
+    out.drag.tangential_coefficient = d.number("tangential_coefficient", out.drag.tangential_coefficient, 0.0, 1e3);
     d.finish();
   }
   if (const json* list = in.raw("point")) {
@@ -69,13 +74,14 @@ json write_loads(const LoadSpec& spec) {
                       {"ramp_time", p.ramp_time},
                       {"frequency", p.frequency},
                       {"phase", p.phase}});
+  json drag = {{"enabled", spec.drag.enabled},
+               {"fluid_density", spec.drag.fluid_density},
+               {"drag_coefficient", spec.drag.drag_coefficient},
+               {"area", spec.drag.area == DragArea::kNodes ? "nodes" : "tip"}};
+  if (spec.drag.area == DragArea::kNodes) drag["tangential_coefficient"] = spec.drag.tangential_coefficient;
   return {{"gravity", {{"enabled", spec.gravity.enabled}, {"acceleration", to_json(spec.gravity.acceleration)}}},
           {"damping", {{"enabled", spec.damping.enabled}, {"coefficient", spec.damping.coefficient}}},
-          {"drag",
-           {{"enabled", spec.drag.enabled},
-            {"fluid_density", spec.drag.fluid_density},
-            {"drag_coefficient", spec.drag.drag_coefficient},
-            {"area", spec.drag.area == DragArea::kNodes ? "nodes" : "tip"}}},
+          {"drag", drag},
           {"point", points}};
 }
 

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include "sim/log/channel_names.h"
@@ -5,13 +6,36 @@
 
 namespace vascsim {
 
+namespace {
+
+// Unit tangent at node i of the polyline x (2N): the mean direction of its edges, or its one
+// edge at the ends and where the rod folds back on itself (the mean vanishes there).
+Vec2 node_tangent(const Eigen::VectorXd& x, int i, int nodes) {
+  auto edge_direction = [&](int e) -> Vec2 {
+    const Vec2 d = x.segment<2>(2 * e + 2) - x.segment<2>(2 * e);
+    const double length = d.norm();
+    return length > 0.0 ? Vec2(d / length) : Vec2(1.0, 0.0);
+  };
+  const Vec2 ahead = edge_direction(std::min(i, nodes - 2));
+  if (i == 0 || i == nodes - 1) return ahead;
+  const Vec2 mean = edge_direction(i - 1) + ahead;
+  const double length = mean.norm();
+  return length > 1e-9 ? Vec2(mean / length) : ahead;
+}
+
+}  // namespace
+
 QuadraticDragModule::QuadraticDragModule(const RodModel& rod, const DragSpec& spec) {
-  const double half_rho_cd = 0.5 * spec.fluid_density * spec.drag_coefficient;
-  if (spec.area == DragArea::kNodes) {
-    c_ = half_rho_cd * 2.0 * rod.outer_radius * rod.voronoi;
+  const double half_rho = 0.5 * spec.fluid_density;
+  cross_flow_ = spec.area == DragArea::kNodes;
+  if (cross_flow_) {
+    const Eigen::VectorXd area = 2.0 * rod.outer_radius * rod.voronoi;  // m^2, projected
+    c_ = half_rho * spec.drag_coefficient * area;
+    c_tangential_ = half_rho * spec.tangential_coefficient * area;
   } else {
     c_ = Eigen::VectorXd::Zero(rod.nodes);
-    c_[rod.nodes - 1] = half_rho_cd * M_PI * rod.outer_radius * rod.outer_radius;
+    c_[rod.nodes - 1] = half_rho * spec.drag_coefficient * M_PI * rod.outer_radius * rod.outer_radius;
+    c_tangential_ = c_;
   }
 }
 
@@ -19,6 +43,15 @@ std::string QuadraticDragModule::channel() const { return channel::kDragForce; }
 
 void QuadraticDragModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force,
                               BandedMatrix* stiffness) const {
+  if (cross_flow_) {
+    add_cross_flow(ctx, force, stiffness);
+  } else {
+    add_isotropic(ctx, force, stiffness);
+  }
+}
+
+void QuadraticDragModule::add_isotropic(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force,
+                                        BandedMatrix* stiffness) const {
   const Eigen::VectorXd& v = *ctx.v;
   for (int i = 0; i < c_.size(); ++i) {
     if (c_[i] == 0.0) continue;
@@ -27,6 +60,24 @@ void QuadraticDragModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorX
     force.segment<2>(2 * i) -= c_[i] * speed * vi;
     if (stiffness && speed > 0.0) {
       Eigen::Matrix2d k = c_[i] * ctx.dv_dx * (speed * Eigen::Matrix2d::Identity() + vi * vi.transpose() / speed);
+      stiffness->add_block<2>(2 * i, k);
+    }
+  }
+}
+
+void QuadraticDragModule::add_cross_flow(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force,
+                                         BandedMatrix* stiffness) const {
+  const Eigen::VectorXd& v = *ctx.v;
+  const Eigen::VectorXd& shape = ctx.start ? ctx.start->x : *ctx.x;
+  const int nodes = static_cast<int>(c_.size());
+  for (int i = 0; i < nodes; ++i) {
+    const Vec2 t = node_tangent(shape, i, nodes);
+    const Vec2 n(-t.y(), t.x());
+    const Vec2 vi = v.segment<2>(2 * i);
+    const double vt = vi.dot(t), vn = vi.dot(n);
+    force.segment<2>(2 * i) -= c_[i] * std::abs(vn) * vn * n + c_tangential_[i] * std::abs(vt) * vt * t;
+    if (stiffness) {
+      Eigen::Matrix2d k = 2.0 * ctx.dv_dx * (c_[i] * std::abs(vn) * n * n.transpose() + c_tangential_[i] * std::abs(vt) * t * t.transpose());
       stiffness->add_block<2>(2 * i, k);
     }
   }

@@ -52,18 +52,32 @@ class ViscousDampingModule : public ForceModule {
   Eigen::VectorXd c_;  // (N), N s/m
 };
 
-// Quadratic drag f_i = -c_i |v_i| v_i, c_i = 1/2 rho Cd A_i (paper II.C, refs section 4).
-//   -df/dv = c_i (|v| I + v v^T / |v|)  (symmetric, positive semi-definite; 0 at v = 0)
-// Channel force/drag.
+// Quadratic drag (paper II.C, refs section 4), c = 1/2 rho Cd A:
+//  - tip (the paper): the tip node only, isotropic, f = -c |v| v, -df/dv = c (|v| I + v v^T / |v|);
+//  - nodes (paper V.A's refinement: a rod meets more resistance moving sideways than along
+//    itself): every node, the cross-flow principle with separate normal and tangential
+//    coefficients, f = -c_n |v.n| (v.n) n - c_t |v.t| (v.t) t, -df/dv = 2 c_n |v.n| n n^T +
+//    2 c_t |v.t| t t^T, where t is the node's unit tangent at the start of the step (lagged, as
+//    friction's normals are: the Jacobian stays exact and symmetric; the direction lags by one
+//    step, far below the rod's rotation per step).
+// Both Jacobians are symmetric, positive semi-definite and 0 at v = 0. Channel force/drag.
 class QuadraticDragModule : public ForceModule {
  public:
   QuadraticDragModule(const RodModel& rod, const DragSpec& spec);
   std::string channel() const override;
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
+  // kg/m, per node: c_i of the tip mode, or the normal c_n,i of the nodes mode (0 without drag).
   const Eigen::VectorXd& coefficients() const { return c_; }
+  // kg/m, per node, c_t,i: along the rod in the nodes mode; equal to coefficients() in the tip mode.
+  const Eigen::VectorXd& tangential_coefficients() const { return c_tangential_; }
 
  private:
-  Eigen::VectorXd c_;  // (N), kg/m, 0 on nodes without drag
+  void add_isotropic(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const;
+  void add_cross_flow(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const;
+
+  bool cross_flow_ = false;
+  Eigen::VectorXd c_;             // (N), kg/m
+  Eigen::VectorXd c_tangential_;  // (N), kg/m
 };
 
 // The controller's node forces (Controls::forces), e.g. the magnetic tip force of issue 4.

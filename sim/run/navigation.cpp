@@ -33,7 +33,8 @@ std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
 
 void add_navigation_modules(const Scene& scene, Navigation& nav, Model& model) {
   nav.contact = resolve_contact_params(scene.contact, model.rod);
-  // The feedforward accelerates the actuated nodes' mass and cancels the drag the scene models.
+  // The feedforward accelerates the actuated nodes' mass and cancels the drag the scene models:
+  // the tip heads along the path, so with drag on every node it meets the tangential coefficient.
   const int n = model.nodes();
   const int actuated = std::min(scene.control.actuated_nodes, n);
   double mass = 0.0;
@@ -41,7 +42,7 @@ void add_navigation_modules(const Scene& scene, Navigation& nav, Model& model) {
   nav.plant.mass = mass;
   if (scene.loads.drag.enabled) {
     for (const auto& f : model.forces)
-      if (const auto* drag = dynamic_cast<const QuadraticDragModule*>(f.get())) nav.plant.drag_coefficient = drag->coefficients()[n - 1];
+      if (const auto* drag = dynamic_cast<const QuadraticDragModule*>(f.get())) nav.plant.drag_coefficient = drag->tangential_coefficients()[n - 1];
   }
 
   switch (scene.control.mode) {
