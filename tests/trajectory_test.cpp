@@ -149,6 +149,50 @@ TEST(Trajectory, SampleKeepsChordErrorBelowTheBound) {
   EXPECT_GT(traj.sample(1e-5).size(), traj.sample(1e-3).size());
 }
 
+// With ramps the speed follows a trapezoid (closed forms): v t / T for t < T, the cruising speed,
+// then v (duration - t) / T, so the reference starts and ends at rest; the path is unchanged and
+// takes T longer; the acceleration is v / T along the path plus the centripetal part, bounded.
+TEST(Trajectory, RampsStartAndStopAtRestWithBoundedAcceleration) {
+  const double v = 0.05, R = 0.1, T = 2.0;
+  const Trajectory cruise(kZigZag, R, v), traj(kZigZag, R, v, T);
+  EXPECT_NEAR(traj.length(), cruise.length(), 1e-15);
+  EXPECT_NEAR(traj.duration(), traj.length() / v + T, 1e-12);
+  EXPECT_EQ(traj.velocity(0.0).norm(), 0.0);
+  EXPECT_LT(traj.velocity(traj.duration()).norm(), 1e-15);
+  EXPECT_LT(traj.velocity(traj.duration() + 10.0).norm(), 1e-15) << "stays at rest at the goal";
+  // Half-way through the first ramp: s = v (T/2)^2 / (2 T) = v T / 8 along the first leg (+x).
+  EXPECT_LT((traj.position(T / 2) - Vec2(v * T / 8, 0)).norm(), 1e-15);
+  EXPECT_LT((traj.acceleration(T / 2) - Vec2(v / T, 0)).norm(), 1e-15);
+  const int n = 200000;
+  const double h = traj.duration() / n;
+  Vec2 integral = Vec2::Zero();
+  for (int k = 0; k < n; ++k) {
+    const double t = k * h;
+    const double expected_speed = std::min({v, v * t / T, v * (traj.duration() - t) / T});
+    ASSERT_NEAR(traj.velocity(t).norm(), expected_speed, 1e-12) << "t " << t;
+    ASSERT_LE(traj.acceleration(t).norm(), (v / T + v * v / R) * (1 + 1e-12)) << "t " << t;
+    integral += 0.5 * h * (traj.velocity(t) + traj.velocity(t + h));
+  }
+  EXPECT_LT((traj.position(0) + integral - kZigZag.back()).norm(), 1e-7) << "position is the integral of velocity";
+  // Acceleration is the derivative of velocity, ramps and arcs alike (points away from joints).
+  for (const double t : {0.7, 1.3, 5.0, traj.duration() - 1.1}) {
+    const double dt = 1e-6;
+    const Vec2 derivative = (traj.velocity(t + dt) - traj.velocity(t - dt)) / (2 * dt);
+    EXPECT_LT((derivative - traj.acceleration(t)).norm(), 1e-6) << "t " << t;
+  }
+}
+
+TEST(Trajectory, ShortPathPeaksBelowTheCruisingSpeed) {
+  // 1 cm with v = 0.05 m/s and T = 1 s: a = 0.05 m/s^2 never reaches v; the profile is a triangle
+  // with peak sqrt(a L) at half of duration 2 sqrt(L / a).
+  const double a = 0.05, L = 0.01;
+  const Trajectory traj({{0, 0}, {L, 0}}, 0.05, 0.05, 1.0);
+  EXPECT_NEAR(traj.duration(), 2 * std::sqrt(L / a), 1e-14);
+  EXPECT_NEAR(traj.velocity(traj.duration() / 2).norm(), std::sqrt(a * L), 1e-14);
+  EXPECT_LT((traj.position(traj.duration()) - Vec2(L, 0)).norm(), 1e-16);
+  EXPECT_THROW(Trajectory({{0, 0}, {1, 0}}, 0.05, 1.0, -1.0), std::invalid_argument);
+}
+
 TEST(Trajectory, DegenerateInputs) {
   const Trajectory point({{0.3, 0.4}}, 0.05, 0.1);
   EXPECT_EQ(point.length(), 0.0);

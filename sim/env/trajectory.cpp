@@ -34,11 +34,14 @@ Polyline clean(const Polyline& in) {
 
 }  // namespace
 
-Trajectory::Trajectory(const Polyline& corners, double corner_radius, double speed) : speed_(speed) {
+Trajectory::Trajectory(const Polyline& corners, double corner_radius, double speed, double ramp_time)
+    : speed_(speed), peak_speed_(speed) {
   if (corners.empty()) throw std::invalid_argument("Trajectory: the polyline has no points");
   if (!(corner_radius >= 0.0) || !std::isfinite(corner_radius))
     throw std::invalid_argument("Trajectory: corner_radius must be finite and >= 0");
   if (!(speed > 0.0) || !std::isfinite(speed)) throw std::invalid_argument("Trajectory: speed must be finite and > 0");
+  if (!(ramp_time >= 0.0) || !std::isfinite(ramp_time))
+    throw std::invalid_argument("Trajectory: ramp_time must be finite and >= 0");
   for (const Vec2& p : corners)
     if (!p.allFinite()) throw std::invalid_argument("Trajectory: a polyline point is not finite");
   const Polyline p = clean(corners);
@@ -91,7 +94,44 @@ Trajectory::Trajectory(const Polyline& corners, double corner_radius, double spe
   }
   add_line(p.back());
   length_ = s;
-  duration_ = length_ / speed_;
+  if (ramp_time > 0.0) {
+    // Accelerating at speed / ramp_time over a distance of half the path reaches sqrt(a L).
+    const double rate = speed_ / ramp_time;  // m/s^2
+    peak_speed_ = std::min(speed_, std::sqrt(rate * length_));
+    ramp_ = peak_speed_ / rate;
+  }
+  // Each ramp covers peak * ramp / 2, half of what cruising would: ramps add ramp_ in all.
+  duration_ = length_ / peak_speed_ + ramp_;
+}
+
+Trajectory::Progress Trajectory::progress(double t) const {
+  const double time = std::clamp(t, 0.0, duration_);
+  Progress p;
+  if (ramp_ > 0.0 && time < ramp_) {  // speeding up from rest
+    const double rate = peak_speed_ / ramp_;
+    p = {0.5 * rate * time * time, rate * time, rate};
+  } else if (ramp_ > 0.0 && time > duration_ - ramp_) {  // slowing down to rest at the end
+    const double rate = peak_speed_ / ramp_, left = duration_ - time;
+    p = {length_ - 0.5 * rate * left * left, rate * left, -rate};
+  } else {
+    p = {peak_speed_ * (time - 0.5 * ramp_), peak_speed_, 0.0};
+  }
+  p.s = std::clamp(p.s, 0.0, length_);
+  return p;
+}
+
+Vec2 Trajectory::direction_at(double s) const {
+  const Piece& q = piece_at(s);
+  if (q.radius == 0.0) return q.direction;
+  const double phi = q.angle0 + std::copysign(std::clamp(s - q.s0, 0.0, q.length) / q.radius, q.turn);
+  return std::copysign(1.0, q.turn) * Vec2(-std::sin(phi), std::cos(phi));
+}
+
+Vec2 Trajectory::curvature_at(double s) const {
+  const Piece& q = piece_at(s);
+  if (q.radius == 0.0) return Vec2::Zero();
+  const double phi = q.angle0 + std::copysign(std::clamp(s - q.s0, 0.0, q.length) / q.radius, q.turn);
+  return -Vec2(std::cos(phi), std::sin(phi)) / q.radius;
 }
 
 const Trajectory::Piece& Trajectory::piece_at(double s) const {
@@ -103,7 +143,7 @@ const Trajectory::Piece& Trajectory::piece_at(double s) const {
 
 Vec2 Trajectory::position(double t) const {
   if (pieces_.empty()) return origin_;
-  const double s = speed_ * std::clamp(t, 0.0, duration_);
+  const double s = progress(t).s;
   const Piece& q = piece_at(s);
   const double along = std::clamp(s - q.s0, 0.0, q.length);
   if (q.radius == 0.0) return q.start + along * q.direction;
@@ -113,21 +153,18 @@ Vec2 Trajectory::position(double t) const {
 
 Vec2 Trajectory::velocity(double t) const {
   if (pieces_.empty()) return Vec2::Zero();
-  const double s = speed_ * std::clamp(t, 0.0, duration_);
-  const Piece& q = piece_at(s);
-  if (q.radius == 0.0) return speed_ * q.direction;
-  const double phi = q.angle0 + std::copysign(std::clamp(s - q.s0, 0.0, q.length) / q.radius, q.turn);
-  return std::copysign(speed_, q.turn) * Vec2(-std::sin(phi), std::cos(phi));
+  const Progress p = progress(t);
+  // Past the end with constant speed the velocity keeps its end value (see the header).
+  const double rate = ramp_ == 0.0 ? peak_speed_ : p.rate;
+  return rate * direction_at(p.s);
 }
 
 Vec2 Trajectory::acceleration(double t) const {
   if (pieces_.empty()) return Vec2::Zero();
-  const double s = speed_ * std::clamp(t, 0.0, duration_);
-  const Piece& q = piece_at(s);
-  if (q.radius == 0.0) return Vec2::Zero();
-  // Centripetal: v^2 / R towards the centre.
-  const double phi = q.angle0 + std::copysign(std::clamp(s - q.s0, 0.0, q.length) / q.radius, q.turn);
-  return -(speed_ * speed_ / q.radius) * Vec2(std::cos(phi), std::sin(phi));
+  const Progress p = progress(t);
+  const double rate = ramp_ == 0.0 ? peak_speed_ : p.rate;
+  // Along the path s'' and centripetal s'^2 / R towards the arc centre.
+  return p.rate_change * direction_at(p.s) + rate * rate * curvature_at(p.s);
 }
 
 Polyline Trajectory::sample(double max_chord_error) const {

@@ -3,6 +3,12 @@
 // speed without unbounded acceleration; with arcs the position is C1 (velocity continuous, |v| =
 // speed) and the acceleration is v^2/R towards the arc centre on arcs and zero on straights.
 //
+// Start and stop: with ramp_time 0 the speed jumps from 0 to `speed` at t = 0 and back at the end
+// (the paper's constant-speed reference; a tip at rest then meets an instant velocity error). With
+// ramp_time T > 0 the speed rises at the constant rate speed / T from rest and falls at the same
+// rate to rest at the end (a trapezoidal profile; a path too short to reach `speed` peaks lower),
+// so velocity is continuous everywhere and the acceleration bounded by speed / T + speed^2 / R.
+//
 // Corner radius: each corner gets min(corner_radius, what fits). A corner turning by angle theta
 // needs a tangent length R tan(|theta|/2) on both legs; a leg shared by two corners gives each half of
 // itself, the first and last legs give all of themselves to their one corner. corner_radius 0, or a
@@ -30,12 +36,13 @@ class Trajectory {
   };
 
   // corners: at least one point, m (consecutive duplicates and straight-through points are
-  // dropped); corner_radius >= 0, m; speed > 0, m/s. Throws std::invalid_argument otherwise.
-  Trajectory(const Polyline& corners, double corner_radius, double speed);
+  // dropped); corner_radius >= 0, m; speed > 0, m/s; ramp_time >= 0, s. Throws
+  // std::invalid_argument otherwise.
+  Trajectory(const Polyline& corners, double corner_radius, double speed, double ramp_time = 0.0);
 
   double length() const { return length_; }      // m
-  double duration() const { return duration_; }  // s, length / speed
-  double speed() const { return speed_; }        // m/s
+  double duration() const { return duration_; }  // s, length / speed, plus ramp_time with ramps
+  double speed() const { return speed_; }        // m/s, the cruising speed asked for
   // At time t (s), clamped to [0, duration()]: past the end these stay at their end values (the
   // velocity does not drop to zero; a caller that stops at the goal checks t >= duration()).
   // A single-point trajectory has zero velocity and acceleration.
@@ -50,11 +57,23 @@ class Trajectory {
 
  private:
   const Piece& piece_at(double s) const;
+  // The time law along the path at time t (clamped to [0, duration()]): arc length s (m), its
+  // rate (m/s) and its second derivative (m/s^2).
+  struct Progress {
+    double s = 0.0, rate = 0.0, rate_change = 0.0;
+  };
+  Progress progress(double t) const;
+  // Geometry at arc length s: unit direction of travel, and the curvature vector (1/m, towards
+  // the arc centre, |k| = 1/R; zero on lines).
+  Vec2 direction_at(double s) const;
+  Vec2 curvature_at(double s) const;
 
   std::vector<Piece> pieces_;  // in order along the path; empty for a single point
   Vec2 origin_ = Vec2::Zero(); // m, the first point
   double length_ = 0.0;        // m
-  double speed_ = 0.0;         // m/s
+  double speed_ = 0.0;         // m/s, asked for
+  double peak_speed_ = 0.0;    // m/s, reached: speed_, or less on a path too short for the ramps
+  double ramp_ = 0.0;          // s, time to reach peak_speed_ from rest (0: no ramps)
   double duration_ = 0.0;      // s
 };
 

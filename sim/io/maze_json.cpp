@@ -45,7 +45,7 @@ std::string maze_document_unlabelled(const Scene& scene) {
   const bool use_bfs = scene.maze.explicit_walls || scene.path.solver == PathSolver::kBreadthFirst;
   const std::vector<Cell> cells = use_bfs ? solve_breadth_first(grid) : solve_wall_follower(grid);
   const Polyline corners = reference_centreline(env, scene.maze, scene.path);
-  const Trajectory trajectory(corners, scene.path.corner_radius, scene.path.speed);
+  const Trajectory trajectory(corners, scene.path.corner_radius, scene.path.speed, scene.path.ramp_time);
 
   json walls = json::array();
   for (const auto& w : env.walls)
@@ -64,6 +64,7 @@ std::string maze_document_unlabelled(const Scene& scene) {
                  {"corner_radius", scene.path.corner_radius},
                  {"length", trajectory.length()},
                  {"speed", scene.path.speed},
+                 {"ramp_time", scene.path.ramp_time},
                  {"duration", trajectory.duration()},
                  {"samples", polyline(trajectory.sample(1e-4))}};
   return doc.dump(1) + "\n";

@@ -10,13 +10,15 @@ void read_path(FieldReader& in, PathSpec& out) {
   out.solver = solver == "bfs" ? PathSolver::kBreadthFirst : PathSolver::kWallFollower;
   out.corner_radius = in.number("corner_radius", out.corner_radius, 0.0, 1e3);
   out.speed = in.positive("speed", out.speed, 1e3);
+  out.ramp_time = in.number("ramp_time", out.ramp_time, 0.0, 1e6);
   in.finish();
 }
 
 json write_path(const PathSpec& spec) {
   return {{"solver", spec.solver == PathSolver::kBreadthFirst ? "bfs" : "wall_follower"},
           {"corner_radius", spec.corner_radius},
-          {"speed", spec.speed}};
+          {"speed", spec.speed},
+          {"ramp_time", spec.ramp_time}};
 }
 
 void read_rod(FieldReader& in, RodSpec& out) {

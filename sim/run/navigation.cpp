@@ -22,7 +22,7 @@ std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
     throw InputError(scene.file + ": " + e.what());
   }
   nav->entry = open_entry(closed, nav->corners, scene.rod.length, nav->environment);
-  nav->trajectory.emplace(nav->corners, scene.path.corner_radius, scene.path.speed);
+  nav->trajectory.emplace(nav->corners, scene.path.corner_radius, scene.path.speed, scene.path.ramp_time);
   // The rod lies straight behind the start, root first: node 0 outside the maze, the tip (last
   // node) on the path's start, heading into the first leg.
   scene.shape.start = nav->entry.tip - scene.rod.length * nav->entry.inward;

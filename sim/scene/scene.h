@@ -36,6 +36,8 @@ struct PathSpec {
   PathSolver solver = PathSolver::kWallFollower;
   double corner_radius = 0.05;  // m, 0 keeps sharp 90-degree corners
   double speed = 0.05;          // m/s, tip reference speed along the path
+  double ramp_time = 0.0;       // s, from rest to `speed` and back to rest at the end; 0: the
+                                // paper's constant speed from t = 0 (trajectory.h)
 };
 
 // The robot: a hollow circular PDMS rod, paper Table I.
