@@ -102,6 +102,21 @@ TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
   EXPECT_GT(edge_pairs_seen, 100) << "and wall corners between nodes";
 }
 
+// The grids are sized for the rod's longest rest edge; an edge stretched far beyond it still
+// finds a wall corner near its middle third (closed form: centre distance minus both radii).
+TEST(WallContact, EdgeStretchedBeyondTheDeclaredLengthStillMeetsCorners) {
+  const std::vector<WallSegment> pillar = {{Vec2(0.05, 0.0), Vec2(0.05, 0.0), 0.006}};  // radius 3 mm
+  const double radius = 0.002, reach = 0.001, declared_edge = 0.01;
+  Eigen::VectorXd x(4);
+  x << 0.0, 0.0055, 0.5, 0.0055;  // one 0.5 m edge, 5.5 mm above the pillar's centre
+  std::vector<std::pair<bool, double>> pairs;
+  ContactGeometry(pillar, radius, reach, declared_edge)
+      .for_each_pair(x, false, [&](const ContactPair& p) { pairs.emplace_back(p.is_edge, p.gap); });
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_TRUE(pairs[0].first);
+  EXPECT_NEAR(pairs[0].second, 0.0055 - 0.003 - radius, 1e-15);
+}
+
 // A node sliding along a wall it presses on feels kinetic friction mu * N against its motion,
 // also when asked at a committed state (ForceContext::at, dv_dx = 0): that is how frames are
 // logged, and a log once showed zero friction throughout a run whose rod slid on walls.

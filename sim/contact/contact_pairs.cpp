@@ -61,8 +61,7 @@ void ContactGeometry::refresh_neighbours(const Eigen::VectorXd& x) const {
   }
   for (int i = 0; i + 1 < nodes; ++i) {
     const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
-    const double radius = std::min(0.5 * (b - a).norm() + rod_radius_ + reach_ + 1.5 * skin_, corner_field_.max_query_radius());
-    corner_field_.candidates(0.5 * (a + b), radius, found);
+    edge_corner_candidates(a, b, rod_radius_ + reach_ + 1.5 * skin_, found);
     c.edge_corners.insert(c.edge_corners.end(), found.begin(), found.end());
     c.edge_begin.push_back(static_cast<int>(c.edge_corners.size()));
   }
@@ -101,6 +100,18 @@ void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
   }
 }
 
+void ContactGeometry::edge_corner_candidates(const Vec2& a, const Vec2& b, double margin, std::vector<int>& found) const {
+  const double radius = 0.5 * (b - a).norm() + margin;
+  if (radius <= corner_field_.max_query_radius()) {
+    corner_field_.candidates(0.5 * (a + b), radius, found);
+    return;
+  }
+  // The grid is sized for the rod's longest rest edge; an edge stretched far beyond it (or a
+  // search wider than the grid's) checks every corner rather than miss one.
+  found.resize(corners_.size());
+  for (std::size_t k = 0; k < corners_.size(); ++k) found[k] = static_cast<int>(k);
+}
+
 double ContactGeometry::min_gap(const Eigen::VectorXd& x, double search) const {
   double gap = std::numeric_limits<double>::infinity();
   const int nodes = static_cast<int>(x.size() / 2);
@@ -108,12 +119,12 @@ double ContactGeometry::min_gap(const Eigen::VectorXd& x, double search) const {
   WallHit hit;
   for (int i = 0; i < nodes; ++i)
     if (wall_field_.nearest(x.segment<2>(2 * i), radius, hit)) gap = std::min(gap, hit.distance - rod_radius_);
-  std::vector<WallHit> hits;
+  std::vector<int> found;
   for (int i = 0; i + 1 < nodes; ++i) {
     const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
-    corner_field_.near(0.5 * (a + b), std::min(0.5 * (b - a).norm() + radius, corner_field_.max_query_radius()), hits);
-    for (const auto& h : hits) {
-      const WallSegment& c = corners_[static_cast<std::size_t>(h.wall)];
+    edge_corner_candidates(a, b, radius, found);
+    for (const int k : found) {
+      const WallSegment& c = corners_[static_cast<std::size_t>(k)];
       gap = std::min(gap, point_segment_distance(c.a, a, b, false).distance - 0.5 * c.thickness - rod_radius_);
     }
   }
@@ -164,12 +175,11 @@ double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen:
       first = c.edge_corners.data() + c.edge_begin[static_cast<std::size_t>(i)];
       last = c.edge_corners.data() + c.edge_begin[static_cast<std::size_t>(i) + 1];
     } else {
-      corner_field_.candidates(0.5 * (a + b), std::min(0.5 * (b - a).norm() + move + rod_radius_,
-                                                       corner_field_.max_query_radius()), listed);
+      edge_corner_candidates(a, b, move + rod_radius_, listed);
       first = listed.data();
       last = listed.data() + listed.size();
     }
-    const double radius = std::min(0.5 * (b - a).norm() + move + rod_radius_, corner_field_.max_query_radius());
+    const double radius = 0.5 * (b - a).norm() + move + rod_radius_;
     for (const int* k = first; k != last; ++k) {
       const WallSegment& corner = corners_[static_cast<std::size_t>(*k)];
       if (wall_hit(corner, *k, 0.5 * (a + b)).distance > radius) continue;  // as near() would

@@ -54,6 +54,9 @@ class ContactGeometry {
     std::vector<int> edge_begin, edge_corners;  // CSR: corners near edge i
   };
   void refresh_neighbours(const Eigen::VectorXd& x) const;
+  // Corners (indices into corners_) whose capsule may lie within `margin` (m) of edge ab: a
+  // superset, from the corner grid around the midpoint.
+  void edge_corner_candidates(const Vec2& a, const Vec2& b, double margin, std::vector<int>& found) const;
 
   std::vector<WallSegment> walls_;
   std::vector<WallSegment> corners_;  // zero-length capsules at the wall ends, deduplicated
