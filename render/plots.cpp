@@ -95,15 +95,21 @@ void plot_line(Canvas& c, const Axes& a, const std::vector<double>& x, const std
   else c.polyline(pts, width, colour);
 }
 
-// A legend in the top-right corner of the axes: line samples and labels.
-// `outside`: right of the axes (map plots, whose data fill the axes).
-void legend(Canvas& c, const Axes& a, const std::vector<std::pair<Rgba, std::string>>& entries, int font,
-            bool outside = false) {
+using LegendEntries = std::vector<std::pair<Rgba, std::string>>;
+
+// Width (px) of the legend box for these entries.
+float legend_width(Canvas& c, const LegendEntries& entries, int font) {
   float w = 0;
   for (const auto& e : entries) w = std::max(w, c.text_width(e.second, font));
-  if (a.right + 20 + w + 3.5f * font > c.width()) outside = false;  // no room beside the axes
-  const float x1 = outside ? a.right + 20 + w + 3.5f * font : a.right - 10, x0 = x1 - w - 3.5f * font,
-              row = 1.4f * font;
+  return w + 3.5f * font;
+}
+
+// A legend in the top-right corner of the axes: line samples and labels.
+// `outside`: right of the axes (map plots, whose data fill the axes).
+void legend(Canvas& c, const Axes& a, const LegendEntries& entries, int font, bool outside = false) {
+  const float w = legend_width(c, entries, font);
+  if (a.right + 20 + w > c.width()) outside = false;  // no room beside the axes
+  const float x1 = outside ? a.right + 20 + w : a.right - 10, x0 = x1 - w, row = 1.4f * font;
   float y = a.top + 10;
   c.box({x0, y}, {x1, y + row * entries.size() + 0.6f * font}, hex(0xFFFFFF, 0.9f), 4);
   c.box_outline({x0, y}, {x1, y + row * entries.size() + 0.6f * font}, 1, kGrid, 4);
@@ -123,9 +129,12 @@ void draw_walls(Canvas& c, const Axes& a, const LogMetadata& m, double to_mm) {
               std::max(1.5f, static_cast<float>(0.5 * w.thickness * px_per_m)), kWall);
 }
 
-Axes map_axes(const Canvas& c, const FrameSource& source, const Series& s, double to_mm) {
+// The axes of a map plot. Its legend (legend_box px wide) goes beside the map where that leaves
+// the map at least half the width; otherwise inside, and the map keeps the whole width.
+Axes map_axes(const Canvas& c, const FrameSource& source, const Series& s, double to_mm, float legend_box) {
   Axes a = plot_area(c);
-  a.right = 0.62f * c.width();  // room for the legend on the right
+  const float beside = c.width() - legend_box - 30.0f;  // 20 px gap, 10 px margin
+  if (beside >= 0.5f * c.width()) a.right = std::min(a.right, beside);
   const LogMetadata& m = source.metadata();
   std::vector<double> xs, ys;
   auto add = [&](Vec2 p) { xs.push_back(p.x() * to_mm), ys.push_back(p.y() * to_mm); };
@@ -238,7 +247,16 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
 
   {  // Tip trajectory against the reference, with actuation arrows (paper Fig. 11).
     c.clear(white);
-    Axes a = map_axes(c, source, s, to_mm);
+    std::vector<double> magnitudes;
+    for (const auto& f : s.actuation) magnitudes.push_back(f.norm());
+    const double typical = typical_peak(magnitudes);
+    const bool arrows = s.has_actuation && typical > 0;
+    const auto force_entry = [&](double nominal_px) {
+      return "magnetic force (" + format_value(typical, fu, 2) + " = " + std::to_string(int(std::lround(nominal_px))) + " px)";
+    };
+    LegendEntries entries = {{kPath, "reference path"}, {kTip, "tip trajectory"}};
+    if (arrows) entries.push_back({kActuation, force_entry(999)});  // as wide as the label gets
+    Axes a = map_axes(c, source, s, to_mm, legend_width(c, entries, font));
     draw_grid(c, a);
     draw_walls(c, a, m, to_mm);
     // The trajectory first and the reference dashed on top, so both show where they coincide.
@@ -248,11 +266,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     pts.clear();
     for (const auto& p : m.path) pts.push_back(a.map(p.x() * to_mm, p.y() * to_mm));
     c.dashed_polyline(pts, 1.8f, 9, 6, kPath);
-    std::vector<std::pair<Rgba, std::string>> entries = {{kPath, "reference path"}, {kTip, "tip trajectory"}};
-    std::vector<double> magnitudes;
-    for (const auto& f : s.actuation) magnitudes.push_back(f.norm());
-    const double typical = typical_peak(magnitudes);
-    if (s.has_actuation && typical > 0) {
+    if (arrows) {
       const double nominal = 0.06 * (a.right - a.left), px_per_n = nominal / typical;
       for (int k = 0; k < 16; ++k) {
         const std::size_t i = (s.t.size() - 1) * k / 15;
@@ -262,8 +276,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
         if (len > 2.5f * nominal) d *= float(2.5 * nominal) / len;  // rare spikes capped
         c.arrow(p, p + d, 2.5f, kActuation);
       }
-      entries.push_back({kActuation, "magnetic force (" + format_value(typical, fu, 2) + " = " +
-                                         std::to_string(int(std::lround(nominal))) + " px)"});
+      entries.back().second = force_entry(nominal);
     }
     draw_frame(c, a, "x (mm)", "y (mm)", "Tip trajectory and magnetic force", white);
     legend(c, a, entries, font, true);
@@ -295,14 +308,22 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   }
   {  // Whole-body snapshots with contact arrows (Fig. 14).
     c.clear(white);
-    Axes a = map_axes(c, source, s, to_mm);
+    // As in the video: the 95th percentile draws a fixed length, so one spike does not shrink
+    // every arrow to nothing; rarer, larger forces draw longer, up to a cap.
+    const double typical = typical_peak(s.max_contact);
+    const auto contact_entry = [&](double nominal_px) {
+      return "contact force (" + format_value(typical, fu, 2) + " = " + std::to_string(int(std::lround(nominal_px))) +
+             " px, max " + format_value(max_con, fu, 2) + ")";
+    };
+    LegendEntries entries = {{hex(0x3B5BA5), "rod (lighter = earlier)"}};
+    if (typical > 0) entries.push_back({kContact, contact_entry(999)});  // as wide as the label gets
+    Axes a = map_axes(c, source, s, to_mm, legend_width(c, entries, font));
     draw_grid(c, a);
     draw_walls(c, a, m, to_mm);
     constexpr int kSnapshots = 6;
-    // As in the video: the 95th percentile draws a fixed length, so one spike does not shrink
-    // every arrow to nothing; rarer, larger forces draw longer, up to a cap.
-    const double typical = typical_peak(s.max_contact), nominal = 0.05 * (a.right - a.left);
-    const double px_per_n = typical > 0 ? nominal / typical : 0;
+    const double nominal = 0.05 * (a.right - a.left), px_per_n = typical > 0 ? nominal / typical : 0;
+    if (typical > 0) entries.back().second = contact_entry(nominal);
+    const int label_font = static_cast<int>(0.8 * font);
     FrameState f;
     for (int k = 0; k < kSnapshots; ++k) {
       const std::size_t i = (source.frame_count() - 1) * static_cast<std::size_t>(k) / (kSnapshots - 1);
@@ -320,14 +341,22 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
       }
       char label[32];
       std::snprintf(label, sizeof label, "t = %.2f s", f.time);
-      c.text(label, pts.back() + glm::vec2(6, -6), static_cast<int>(0.8 * font), kInk);
+      // Ahead of the tip, where this snapshot's own rod is not, on a light card (it may still
+      // fall on a wall or another snapshot).
+      glm::vec2 ahead = pts.size() > 1 ? pts.back() - pts[pts.size() - 2] : glm::vec2(1, 0);
+      const float ahead_len = std::sqrt(ahead.x * ahead.x + ahead.y * ahead.y);
+      ahead = ahead_len > 0 ? ahead / ahead_len : glm::vec2(1, 0);
+      const float w = c.text_width(label, label_font), h = static_cast<float>(label_font);
+      const glm::vec2 tip = pts.back() + 8.0f * ahead;
+      glm::vec2 at;  // left end of the baseline
+      if (std::abs(ahead.x) >= std::abs(ahead.y))
+        at = {ahead.x >= 0 ? tip.x : tip.x - w, tip.y + 0.35f * h};
+      else
+        at = {tip.x - 0.5f * w, ahead.y > 0 ? tip.y + h : tip.y - 0.3f * h};
+      c.box(at + glm::vec2(-3, -1.05f * h), at + glm::vec2(w + 3, 0.35f * h), hex(0xFFFFFF, 0.8f), 3);
+      c.text(label, at, label_font, kInk);
     }
     draw_frame(c, a, "x (mm)", "y (mm)", "Rod snapshots and contact forces", white);
-    std::vector<std::pair<Rgba, std::string>> entries = {{hex(0x3B5BA5), "rod (lighter = earlier)"}};
-    if (px_per_n > 0)
-      entries.push_back({kContact, "contact force (" + format_value(typical, fu, 2) + " = " +
-                                       std::to_string(int(std::lround(nominal))) + " px, max " +
-                                       format_value(max_con, fu, 2) + ")"});
     legend(c, a, entries, font, true);
     save(c, (fs::path(dir) / "snapshots.png").string(), force, written);
   }
