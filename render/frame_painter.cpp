@@ -103,11 +103,13 @@ FramePainter::FramePainter(const LogMetadata& metadata, const ViewOptions& view,
   map_x0_ = 0;
   // Without a side panel the HUD card takes a band across the top: the map starts below it, so
   // the card never hides a wall or the rod.
+  // Likewise the legend (arrow scales, scale bar) takes a band across the bottom.
   map_y0_ = view.panel && !side_panel_ ? card_bottom() + 0.4f * static_cast<float>(font_px_) : 0.0f;
+  map_y1_ = static_cast<float>(view.panel && !side_panel_ ? h - band_height() : h);
   // The panel needs about 15 characters of width whatever the frame size.
   map_x1_ = static_cast<float>(side_panel_ ? std::round(w - std::max(0.28 * w, 15.0 * font_px_)) : w);
   const Vec2 size = world_.max - world_.min;
-  scale_ = 0.94 * std::min((map_x1_ - map_x0_) / size.x(), (h - map_y0_) / size.y()) * view.zoom;
+  scale_ = 0.94 * std::min((map_x1_ - map_x0_) / size.x(), (map_y1_ - map_y0_) / size.y()) * view.zoom;
 }
 
 glm::dmat3 FramePainter::camera(const FrameState& frame) const {
@@ -116,7 +118,7 @@ glm::dmat3 FramePainter::camera(const FrameState& frame) const {
   m[0][0] = scale_;
   m[1][1] = -scale_;  // y up in the world, down on screen
   m[2][0] = 0.5 * (map_x0_ + map_x1_) - centre.x() * scale_;
-  m[2][1] = 0.5 * (map_y0_ + view_.height) + centre.y() * scale_;
+  m[2][1] = 0.5 * (map_y0_ + map_y1_) + centre.y() * scale_;
   return m;
 }
 
@@ -195,6 +197,48 @@ float FramePainter::card_bottom() const {
   return 0.5f * pad + 5.6f * row + pad;
 }
 
+float FramePainter::band_height() const {
+  const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = 1.45f * fs;
+  return 2.0f * pad + 2.0f * row;
+}
+
+// Narrow frames: the side panel's legend in brief, on a card across the bottom: each force
+// arrow at the length of a round value, then the scale bar.
+void FramePainter::paint_band(Canvas& c) {
+  const float W = static_cast<float>(view_.width), H = static_cast<float>(view_.height);
+  const int fs = font_px_, small = std::max(9, static_cast<int>(std::lround(0.8 * fs)));
+  const float pad = 0.8f * fs, row = 1.45f * fs, mid = -0.35f * fs;
+  const float x0 = 0.5f * pad, x1 = W - 0.5f * pad, top = map_y1_ + 0.5f * pad;
+  c.box({x0, top}, {x1, H - 0.5f * pad}, hex(0xFFFFFF, 0.88f), 0.4f * fs);
+  float y = top + 0.5f * pad + 0.9f * fs;
+  const float half = 0.5f * (x1 - x0 - pad);
+  float x = x0 + 0.5f * pad;
+  auto arrow_entry = [&](double px_per_newton, double reference, Rgba colour, float width, const char* what) {
+    if (px_per_newton <= 0) return;
+    const std::string value = format_value(reference, scales_.unit, reference * scales_.unit.factor < 1 ? 1 : 0);
+    c.text(what, {x, y}, small, kInk);
+    const float start = x + c.text_width(what, small) + 0.5f * fs;
+    const float room = x + half - start - c.text_width(value, small) - 1.0f * fs;
+    const float len = static_cast<float>(std::min<double>(reference * px_per_newton, room));
+    c.arrow({start, y + mid}, {start + len, y + mid}, width, colour);
+    c.text(value, {start + len + 0.4f * fs, y}, small, kInk);
+    x += half;
+  };
+  arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, std::max(3.0f, H / 200.0f),
+              "Magnetic");
+  arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, std::max(2.0f, H / 280.0f),
+              "Contact");
+  y += row;
+  const float lx = x0 + 0.5f * pad;
+  const double bar_m = nice_floor(0.3 * (x1 - x0) / scale_);
+  const float bar_px = static_cast<float>(bar_m * scale_);
+  c.box({lx, y + mid - 2}, {lx + bar_px, y + mid + 2}, kInk);
+  c.box({lx, y + mid - 6}, {lx + 2, y + mid + 6}, kInk);
+  c.box({lx + bar_px - 2, y + mid - 6}, {lx + bar_px, y + mid + 6}, kInk);
+  c.text(format_value(bar_m, length_unit(bar_m), bar_m * length_unit(bar_m).factor < 1 ? 1 : 0),
+         {lx + bar_px + 0.6f * fs, y}, small, kInk);
+}
+
 void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   const float W = static_cast<float>(view_.width), H = static_cast<float>(view_.height);
   const int fs = font_px_, small = std::max(9, static_cast<int>(std::lround(0.8 * fs)));
@@ -231,7 +275,10 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   field("Tip error", f.tip_error >= 0 ? format_value(f.tip_error, mm, 2) : std::string("n/a"));
   field("Magnetic force", f.actuation.empty() ? std::string("n/a") : format_value(f.actuation_total().norm(), scales_.unit, 2));
   field("Max contact", f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
-  if (!side_panel_) return;
+  if (!side_panel_) {
+    paint_band(c);
+    return;
+  }
 
   // Legend: each symbol as drawn on the map; force arrows at the length of a round value.
   y += 0.6f * row;

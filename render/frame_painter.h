@@ -62,6 +62,8 @@ class FramePainter {
   void paint_world(Canvas& c, const glm::dmat3& m, const FrameState& f, const std::vector<Vec2>& trail);
   void paint_panel(Canvas& c, const FrameState& f);
   float card_bottom() const;  // px, lower edge of the HUD card of frames without a side panel
+  float band_height() const;  // px, the legend band below the map of frames without a side panel
+  void paint_band(Canvas& c);
 
   LogMetadata meta_;
   ViewOptions view_;
@@ -69,6 +71,7 @@ class FramePainter {
   Box2 world_;                    // m, what the fit camera shows
   float map_x0_, map_x1_;         // px, the map's horizontal extent (the panel takes the rest)
   float map_y0_;                  // px, top of the map (below the HUD card of narrow frames)
+  float map_y1_;                  // px, bottom of the map (above the legend band of narrow frames)
   bool side_panel_;
   double scale_ = 1;              // px per m
   int font_px_;
