@@ -6,9 +6,15 @@
 
 #include <glm/vec3.hpp>
 
+#include "render/palette.h"
+
 namespace vascsim::render {
 
 namespace {
+
+using palette::kActuation;
+using palette::kContact;
+using palette::kInk;
 
 // The palette: a light, calm page; the lumen a pale tissue tone bounded by dark walls; the rod
 // dark blue; forces in saturated colours that differ also in lightness (readable in grey).
@@ -22,11 +28,8 @@ constexpr Rgba kRodEdge = hex(0x0B1A2A);
 constexpr Rgba kTip = hex(0x1971C2);
 constexpr Rgba kStart = hex(0x2F9E44);
 constexpr Rgba kGoal = hex(0xC92A2A);
-constexpr Rgba kActuation = hex(0xAE3EC9);
-constexpr Rgba kContact = hex(0xE8590C);
 constexpr Rgba kPanel = hex(0xFFFFFF);
 constexpr Rgba kPanelEdge = hex(0xD0D5DB);
-constexpr Rgba kInk = hex(0x212529);
 constexpr Rgba kMuted = hex(0x5F6B76);
 
 glm::vec2 apply(const glm::dmat3& m, Vec2 p) {

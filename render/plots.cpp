@@ -7,6 +7,7 @@
 
 #include "render/frame_painter.h"
 #include "render/number_format.h"
+#include "render/palette.h"
 #include "render/png_writer.h"
 #include "sim/scene/input_error.h"
 
@@ -14,13 +15,14 @@ namespace vascsim::render {
 
 namespace {
 
-constexpr Rgba kInk = hex(0x212529);
+using palette::kActuation;
+using palette::kContact;
+using palette::kInk;
+
 constexpr Rgba kGrid = hex(0xE3E6EA);
 constexpr Rgba kWall = hex(0xC3CAD2);
 constexpr Rgba kPath = hex(0x4C6EF5);
 constexpr Rgba kTip = hex(0xF08C00);
-constexpr Rgba kActuation = hex(0xAE3EC9);
-constexpr Rgba kContact = hex(0xE8590C);
 constexpr Rgba kSecondary = hex(0x74B816);
 constexpr Rgba kTertiary = hex(0x1098AD);
 

@@ -3,10 +3,12 @@
 // be on screen and not under the panel. A 640x480 frame once lost the right wall this way.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "render/canvas.h"
 #include "render/frame_painter.h"
+#include "render/palette.h"
 
 namespace vascsim::render {
 namespace {
@@ -51,6 +53,44 @@ TEST(RenderCamera, FitShowsEveryThickOuterWallAtEveryFrameSize) {
     for (const Vec2& p : probes)
       EXPECT_TRUE(is_wall(rgba, view.width, view.height, painter.to_pixel(frame, p)))
           << view.width << "x" << view.height << ": outer wall not visible at (" << p.x() << ", " << p.y() << ")";
+  }
+}
+
+// Frames without a side panel still explain the arrows: a band below the map carries the two
+// force arrows of the legend, and nothing of them lies on the map.
+TEST(RenderCamera, NarrowFramesShowTheArrowLegendBelowTheMap) {
+  const LogMetadata meta = boxed_maze();
+  FrameState frame;
+  frame.position = {0.4, 0.5, 0.5, 0.5, 0.6, 0.5};
+  ForceScales scales;
+  scales.actuation_px_per_newton = 2e4;  // 2 mN draws 40 px
+  scales.actuation_reference = 2e-3;
+  scales.contact_px_per_newton = 2e4;
+  scales.contact_reference = 1e-3;
+  for (const auto& size : {std::array<int, 2>{480, 640}, std::array<int, 2>{400, 400}}) {
+    ViewOptions view;
+    view.width = size[0];
+    view.height = size[1];
+    FramePainter painter(meta, view, scales, frame);
+    Canvas canvas(view.width, view.height, AntiAliasing::kNone);
+    painter.paint(canvas, frame, {});
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(view.width) * view.height * 4);
+    canvas.finish(rgba.data());
+    const int map_bottom = static_cast<int>(std::ceil(painter.to_pixel(frame, Vec2(0.5, -0.05)).y));
+    auto count = [&](Rgba colour, int y0, int y1) {
+      int n = 0;
+      for (int y = std::max(0, y0); y < std::min(view.height, y1); ++y)
+        for (int x = 0; x < view.width; ++x) {
+          const std::uint8_t* c = &rgba[(static_cast<std::size_t>(y) * view.width + x) * 4];
+          n += std::abs(c[0] - colour.r * 255) < 4 && std::abs(c[1] - colour.g * 255) < 4 &&
+               std::abs(c[2] - colour.b * 255) < 4;
+        }
+      return n;
+    };
+    const std::string where = std::to_string(view.width) + "x" + std::to_string(view.height);
+    EXPECT_GT(count(palette::kActuation, map_bottom, view.height), 40) << where << ": magnetic arrow in the band";
+    EXPECT_GT(count(palette::kContact, map_bottom, view.height), 20) << where << ": contact arrow in the band";
+    EXPECT_EQ(count(palette::kActuation, 0, map_bottom), 0) << where << ": no arrows were drawn on the map";
   }
 }
 
