@@ -57,6 +57,32 @@ Box2 world_box(const LogMetadata& meta, const FrameState& first) {
   return {b.min - pad, b.max + pad};
 }
 
+// A legend arrow: `reference` newtons at `px_per_newton` from `start` (its centre line), then,
+// `gap` px on, its value on `baseline`; arrow, gap and value fit in `room` px.
+void legend_arrow(Canvas& c, glm::vec2 start, float baseline, float room, float gap, double px_per_newton,
+                  double reference, const DisplayUnit& unit, Rgba colour, float width, int font) {
+  const std::string value = format_value(reference, unit, reference * unit.factor < 1 ? 1 : 0);
+  const float len = static_cast<float>(std::min<double>(reference * px_per_newton, room - c.text_width(value, font) - gap));
+  c.arrow(start, {start.x + len, start.y}, width, colour);
+  c.text(value, {start.x + len + gap, baseline}, font, kInk);
+}
+
+// A scale bar of a round length at most `max_px` long, its left end at `left` (the bar's
+// centre line), labelled on `label_baseline`: beside the bar's right end, or under its left end.
+void scale_bar(Canvas& c, glm::vec2 left, double max_px, double px_per_metre, float label_baseline, bool label_beside,
+               int font) {
+  const double bar_m = nice_floor(max_px / px_per_metre);
+  const float bar_px = static_cast<float>(bar_m * px_per_metre), x = left.x, y = left.y;
+  c.box({x, y - 3}, {x + bar_px, y + 3}, kInk);
+  c.box({x, y - 8}, {x + 2, y + 8}, kInk);
+  c.box({x + bar_px - 2, y - 8}, {x + bar_px, y + 8}, kInk);
+  c.text(format_value(bar_m, length_unit(bar_m), bar_m * length_unit(bar_m).factor < 1 ? 1 : 0),
+         {label_beside ? x + bar_px + 0.6f * font : x, label_baseline}, font, kInk);
+}
+
+float actuation_arrow_width(float frame_height) { return std::max(3.0f, frame_height / 200.0f); }
+float contact_arrow_width(float frame_height) { return std::max(2.0f, frame_height / 280.0f); }
+
 }  // namespace
 
 double typical_peak(std::vector<double> v) {
@@ -175,7 +201,7 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
   c.disc(scratch_.back(), r + 1.5f, kTip);
 
   // Arrows start at the node they act on and point along the force (screen y flips).
-  const float contact_w = std::max(2.0f, h / 280.0f);
+  const float contact_w = contact_arrow_width(h);
   if (scales_.contact_px_per_newton > 0 && !f.contact.empty()) {
     for (std::size_t i = 0; i < f.node_count(); ++i) {
       glm::vec2 d(static_cast<float>(f.contact[2 * i] * scales_.contact_px_per_newton),
@@ -191,7 +217,7 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
     glm::vec2 d(static_cast<float>(F.x()), static_cast<float>(-F.y()));
     const float len = std::sqrt(d.x * d.x + d.y * d.y);
     if (len > scales_.actuation_max_px) d *= static_cast<float>(scales_.actuation_max_px) / len;
-    if (len >= 1.0f) c.arrow(scratch_.back(), scratch_.back() + d, std::max(3.0f, h / 200.0f), kActuation);
+    if (len >= 1.0f) c.arrow(scratch_.back(), scratch_.back() + d, actuation_arrow_width(h), kActuation);
   }
 }
 
@@ -218,28 +244,16 @@ void FramePainter::paint_band(Canvas& c) {
   float x = x0 + 0.5f * pad;
   auto arrow_entry = [&](double px_per_newton, double reference, Rgba colour, float width, const char* what) {
     if (px_per_newton <= 0) return;
-    const std::string value = format_value(reference, scales_.unit, reference * scales_.unit.factor < 1 ? 1 : 0);
     c.text(what, {x, y}, small, kInk);
     const float start = x + c.text_width(what, small) + 0.5f * fs;
-    const float room = x + half - start - c.text_width(value, small) - 1.0f * fs;
-    const float len = static_cast<float>(std::min<double>(reference * px_per_newton, room));
-    c.arrow({start, y + mid}, {start + len, y + mid}, width, colour);
-    c.text(value, {start + len + 0.4f * fs, y}, small, kInk);
+    legend_arrow(c, {start, y + mid}, y, x + half - start - 0.6f * fs, 0.4f * fs, px_per_newton, reference, scales_.unit,
+                 colour, width, small);
     x += half;
   };
-  arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, std::max(3.0f, H / 200.0f),
-              "Magnetic");
-  arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, std::max(2.0f, H / 280.0f),
-              "Contact");
+  arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, actuation_arrow_width(H), "Magnetic");
+  arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, contact_arrow_width(H), "Contact");
   y += row;
-  const float lx = x0 + 0.5f * pad;
-  const double bar_m = nice_floor(0.3 * (x1 - x0) / scale_);
-  const float bar_px = static_cast<float>(bar_m * scale_);
-  c.box({lx, y + mid - 2}, {lx + bar_px, y + mid + 2}, kInk);
-  c.box({lx, y + mid - 6}, {lx + 2, y + mid + 6}, kInk);
-  c.box({lx + bar_px - 2, y + mid - 6}, {lx + bar_px, y + mid + 6}, kInk);
-  c.text(format_value(bar_m, length_unit(bar_m), bar_m * length_unit(bar_m).factor < 1 ? 1 : 0),
-         {lx + bar_px + 0.6f * fs, y}, small, kInk);
+  scale_bar(c, {x0 + 0.5f * pad, y + mid}, 0.3 * (x1 - x0), scale_, y, true, small);
 }
 
 void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
@@ -296,17 +310,12 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     if (px_per_newton <= 0) return;
     c.text(what, {lx, y}, small, kInk);
     y += row;
-    const std::string value = format_value(reference, scales_.unit, reference * scales_.unit.factor < 1 ? 1 : 0);
-    const float room = rx - lx - c.text_width(value, small) - 0.6f * fs;
-    const float len = static_cast<float>(std::min<double>(reference * px_per_newton, room));
-    c.arrow({lx, y + mid}, {lx + len, y + mid}, width, colour);
-    c.text(value, {lx + len + 0.6f * fs, y}, small, kInk);
+    legend_arrow(c, {lx, y + mid}, y, rx - lx, 0.6f * fs, px_per_newton, reference, scales_.unit, colour, width, small);
     y += row;
   };
-  arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, std::max(3.0f, H / 200.0f),
+  arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, actuation_arrow_width(H),
               "Magnetic force");
-  arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, std::max(2.0f, H / 280.0f),
-              "Contact force");
+  arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, contact_arrow_width(H), "Contact force");
   const float r = std::max(0.5f * float(view_.min_rod_width_px), static_cast<float>(meta_.rod_outer_radius * scale_));
   c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kRodEdge);
   c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kRod);
@@ -324,14 +333,8 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   entry("start, goal");
 
   // Scale bar at the bottom: a round length about half the panel wide.
-  const double bar_m = nice_floor(0.6 * (rx - lx) / scale_);
-  const float bar_px = static_cast<float>(bar_m * scale_);
   const float by = H - pad - 1.6f * fs;
-  c.box({lx, by - 3}, {lx + bar_px, by + 3}, kInk);
-  c.box({lx, by - 8}, {lx + 2, by + 8}, kInk);
-  c.box({lx + bar_px - 2, by - 8}, {lx + bar_px, by + 8}, kInk);
-  c.text(format_value(bar_m, length_unit(bar_m), bar_m * length_unit(bar_m).factor < 1 ? 1 : 0),
-         {lx, by + 1.4f * fs}, small, kInk);
+  scale_bar(c, {lx, by}, 0.6 * (rx - lx), scale_, by + 1.4f * fs, false, small);
 }
 
 }  // namespace vascsim::render
