@@ -67,9 +67,12 @@ TEST_P(Traversal, ReachesTheGoalOnTwentyOneMazes) {
     const RunStatistics s = run_scene(fast_scene(seed, m.actuation, m.contact));
     ASSERT_FALSE(s.failed) << m.name << " seed " << seed << ": " << s.failure;
     EXPECT_TRUE(s.goal_reached) << m.name << " seed " << seed;
-    // docs/navigation.md: tracking error bound at 0.25 m/s, five times the default speed (force
+    // docs/navigation.md: tracking error bounds at 0.25 m/s, five times the default speed (force
     // mode lags the body's pull at corners; at the default 0.05 m/s the RMS error is ~0.4 mm).
-    EXPECT_LT(s.tip_error_rms, 8e-3) << m.name << " seed " << seed;
+    // The paper's penalty moves nodes, the tip among them, after each step, outside the
+    // controller's loop: its bound is looser.
+    const double bound = m.contact == ContactMode::kImplicit ? 2e-3 : 10e-3;  // m, RMS
+    EXPECT_LT(s.tip_error_rms, bound) << m.name << " seed " << seed;
     if (m.contact == ContactMode::kImplicit) {
       EXPECT_LE(s.max_penetration, 0.05 * 2e-3) << m.name << " seed " << seed;
       EXPECT_GT(s.min_gap, 0.0) << m.name << " seed " << seed;
