@@ -112,6 +112,19 @@ TEST_P(ShippedScene, ReachesItsGoal) {
   EXPECT_LE(s.max_penetration, 0.05 * scene.rod.outer_radius);
 }
 
+// A maze scene that names no duration runs until the reference reaches the goal plus the
+// settling time; a named one, or a scene without a maze, keeps its own.
+TEST(Navigation, MazeSceneWithoutDurationRunsToTheGoal) {
+  Scene implicit = read_scene_text(R"({"maze": {"seed": 4}})", "implicit.json");
+  const auto nav = prepare_navigation(implicit);
+  EXPECT_NEAR(implicit.run.duration, nav->trajectory->duration() + 2.0, 1e-12);
+  EXPECT_GT(implicit.run.duration, 10.0) << "longer than the free-space default";
+  Scene named = read_scene_text(R"({"maze": {"seed": 4}, "run": {"duration": 5}})", "named.json");
+  prepare_navigation(named);
+  EXPECT_EQ(named.run.duration, 5.0);
+  EXPECT_EQ(read_scene_text(R"({"maze": null})", "free.json").run.duration, 10.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene, ::testing::Values("maze_default", "maze_body_drag", "paper_maze"));
 
 TEST(Navigation, FieldModeReachesTheGoal) {

@@ -119,7 +119,10 @@ int run_run_command(int argc, char** argv) {
   if (!out) throw UsageError("--out DIR is required");
 
   Scene scene = read_scene_file(args.positional().front());
-  scene.run.duration = args.number("duration", scene.run.duration, 1e-9, 1e7);
+  if (args.value("duration")) {
+    scene.run.duration = args.number("duration", scene.run.duration, 1e-9, 1e7);
+    scene.run.duration_from_path = false;
+  }
 
   // Refuse to mix a new run into a directory holding someone's files.
   std::error_code ec;

@@ -38,6 +38,7 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
   section("path", io::read_path, scene.path);
   section("rod", io::read_rod, scene.rod);
   section("run", io::read_run, scene.run);
+  scene.run.duration_from_path = scene.has_maze && !(root.contains("run") && root["run"].contains("duration"));
   section("control", io::read_control, scene.control);
   section("contact", io::read_contact, scene.contact);
   section("shape", io::read_shape, scene.shape);

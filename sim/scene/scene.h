@@ -200,6 +200,10 @@ struct ContactSpec {
 // Output of a run.
 struct RunSpec {
   double duration = 10.0;         // s, simulated time
+  // A maze scene that names no duration runs until the reference reaches the goal plus
+  // kSettleTime (set by the scene reader, resolved by prepare_navigation).
+  bool duration_from_path = false;
+  static constexpr double kSettleTime = 2.0;  // s
   double output_interval = 0.01;  // s, time between logged frames
 };
 
