@@ -52,7 +52,9 @@ std::string maze_document_unlabelled(const Scene& scene) {
     walls.push_back({{"from", point(w.a)}, {"to", point(w.b)}, {"thickness", w.thickness}});
   json doc;
   doc["format"] = "vascsim-maze/1";
-  doc["scene"] = json::parse(scene_to_json(scene));
+  Scene as_run = scene;  // with the duration a run of it would use
+  as_run.run.duration = scene.run.duration_for(trajectory.duration());
+  doc["scene"] = json::parse(scene_to_json(as_run));
   doc["bounds"] = {point(env.bounds.min), point(env.bounds.max)};
   doc["lumen_width"] = env.lumen_width;
   doc["start"] = point(env.start);

@@ -23,10 +23,8 @@ std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
   }
   nav->entry = open_entry(closed, nav->corners, scene.rod.length, nav->environment);
   nav->trajectory.emplace(nav->corners, scene.path.corner_radius, scene.path.speed, scene.path.ramp_time);
-  if (scene.run.duration_from_path) {
-    scene.run.duration = nav->trajectory->duration() + RunSpec::kSettleTime;
-    scene.run.duration_from_path = false;
-  }
+  scene.run.duration = scene.run.duration_for(nav->trajectory->duration());
+  scene.run.duration_from_path = false;
   // The rod lies straight behind the start, root first: node 0 outside the maze, the tip (last
   // node) on the path's start, heading into the first leg.
   scene.shape.start = nav->entry.tip - scene.rod.length * nav->entry.inward;

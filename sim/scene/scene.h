@@ -204,6 +204,8 @@ struct RunSpec {
   // kSettleTime (set by the scene reader, resolved by prepare_navigation).
   bool duration_from_path = false;
   static constexpr double kSettleTime = 2.0;  // s
+  // s, the duration a run uses when its reference takes path_duration (s).
+  double duration_for(double path_duration) const { return duration_from_path ? path_duration + kSettleTime : duration; }
   double output_interval = 0.01;  // s, time between logged frames
 };
 
