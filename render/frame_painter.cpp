@@ -58,13 +58,18 @@ Box2 world_box(const LogMetadata& meta, const FrameState& first) {
 }
 
 // A legend arrow: `reference` newtons at `px_per_newton` from `start` (its centre line), then,
-// `gap` px on, its value on `baseline`; arrow, gap and value fit in `room` px.
+// `gap` px on, its value on `baseline`; arrow, gap and value fit in `room` px. Where the
+// reference does not fit, a smaller round value is drawn, so the arrow always has the length
+// its label says.
 void legend_arrow(Canvas& c, glm::vec2 start, float baseline, float room, float gap, double px_per_newton,
                   double reference, const DisplayUnit& unit, Rgba colour, float width, int font) {
-  const std::string value = format_value(reference, unit, reference * unit.factor < 1 ? 1 : 0);
-  const float len = static_cast<float>(std::min<double>(reference * px_per_newton, room - c.text_width(value, font) - gap));
+  auto label = [&](double value) { return format_value(value, unit, value * unit.factor < 1 ? 1 : 0); };
+  const double fits = (room - gap - c.text_width(label(reference), font)) / px_per_newton;  // N
+  if (reference > fits) reference = fits > 0 ? nice_floor(fits) : 0;
+  const float len = static_cast<float>(reference * px_per_newton);
+  if (len < 4.0f) return;  // no room for an arrow at all
   c.arrow(start, {start.x + len, start.y}, width, colour);
-  c.text(value, {start.x + len + gap, baseline}, font, kInk);
+  c.text(label(reference), {start.x + len + gap, baseline}, font, kInk);
 }
 
 // A scale bar of a round length at most `max_px` long, its left end at `left` (the bar's
@@ -233,7 +238,7 @@ float FramePainter::band_height() const {
 
 // Narrow frames: the side panel's legend in brief, on a card across the bottom: each force
 // arrow at the length of a round value, then the scale bar.
-void FramePainter::paint_band(Canvas& c) {
+void FramePainter::paint_band(Canvas& c) const {
   const float W = static_cast<float>(view_.width), H = static_cast<float>(view_.height);
   const int fs = font_px_, small = std::max(9, static_cast<int>(std::lround(0.8 * fs)));
   const float pad = 0.8f * fs, row = 1.45f * fs, mid = -0.35f * fs;

@@ -63,7 +63,7 @@ class FramePainter {
   void paint_panel(Canvas& c, const FrameState& f);
   float card_bottom() const;  // px, lower edge of the HUD card of frames without a side panel
   float band_height() const;  // px, the legend band below the map of frames without a side panel
-  void paint_band(Canvas& c);
+  void paint_band(Canvas& c) const;
 
   LogMetadata meta_;
   ViewOptions view_;

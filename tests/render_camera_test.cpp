@@ -94,5 +94,44 @@ TEST(RenderCamera, NarrowFramesShowTheArrowLegendBelowTheMap) {
   }
 }
 
+// A legend arrow means what its label says: where the reference force (2 mN at 100 px/mN, 200 px)
+// does not fit a narrow band, a smaller round value is drawn at its true length instead of
+// squeezing the 2 mN arrow.
+TEST(RenderCamera, LegendArrowThatDoesNotFitShowsARoundValueAtItsTrueLength) {
+  const LogMetadata meta = boxed_maze();
+  FrameState frame;
+  frame.position = {0.4, 0.5, 0.5, 0.5, 0.6, 0.5};
+  ForceScales scales;
+  scales.actuation_px_per_newton = 1e5;
+  scales.actuation_reference = 2e-3;
+  ViewOptions view;
+  view.width = 360;
+  view.height = 640;
+  FramePainter painter(meta, view, scales, frame);
+  Canvas canvas(view.width, view.height, AntiAliasing::kNone);
+  painter.paint(canvas, frame, {});
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(view.width) * view.height * 4);
+  canvas.finish(rgba.data());
+  const int map_bottom = static_cast<int>(std::ceil(painter.to_pixel(frame, Vec2(0.5, -0.05)).y));
+  int first = view.width, last = -1;
+  for (int y = map_bottom; y < view.height; ++y)
+    for (int x = 0; x < view.width; ++x) {
+      const std::uint8_t* c = &rgba[(static_cast<std::size_t>(y) * view.width + x) * 4];
+      if (std::abs(c[0] - palette::kActuation.r * 255) < 4 && std::abs(c[1] - palette::kActuation.g * 255) < 4 &&
+          std::abs(c[2] - palette::kActuation.b * 255) < 4)
+        first = std::min(first, x), last = std::max(last, x);
+    }
+  ASSERT_GE(last, first) << "the magnetic legend arrow is drawn";
+  const double length_px = last - first + 1;
+  ASSERT_LT(length_px, 180.0) << "200 px cannot fit in half of a 360 px band";
+  // The drawn force, 1 / 100 mN per px, is one of 1, 2, 5 x 10^k mN (within the 2 px of the
+  // arrow's rasterised ends).
+  const double drawn_mn = length_px / 100.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(drawn_mn * 1.05)));
+  bool round = false;
+  for (const double m : {1.0, 2.0, 5.0, 10.0}) round |= std::abs(drawn_mn - m * decade) * 100.0 <= 2.0;
+  EXPECT_TRUE(round) << "drawn arrow of " << length_px << " px is " << drawn_mn << " mN, not a round value";
+}
+
 }  // namespace
 }  // namespace vascsim::render

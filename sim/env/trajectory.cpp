@@ -113,24 +113,28 @@ Trajectory::Progress Trajectory::progress(double t) const {
   } else if (ramp_ > 0.0 && time > duration_ - ramp_) {  // slowing down to rest at the end
     const double rate = peak_speed_ / ramp_, left = duration_ - time;
     p = {length_ - 0.5 * rate * left * left, rate * left, -rate};
-  } else {
+  } else {  // cruising; without ramps also past the end, where the velocity keeps its end value
     p = {peak_speed_ * (time - 0.5 * ramp_), peak_speed_, 0.0};
   }
   p.s = std::clamp(p.s, 0.0, length_);
   return p;
 }
 
+double Trajectory::Piece::angle_at(double s) const {
+  return angle0 + std::copysign(std::clamp(s - s0, 0.0, length) / radius, turn);
+}
+
 Vec2 Trajectory::direction_at(double s) const {
   const Piece& q = piece_at(s);
   if (q.radius == 0.0) return q.direction;
-  const double phi = q.angle0 + std::copysign(std::clamp(s - q.s0, 0.0, q.length) / q.radius, q.turn);
+  const double phi = q.angle_at(s);
   return std::copysign(1.0, q.turn) * Vec2(-std::sin(phi), std::cos(phi));
 }
 
 Vec2 Trajectory::curvature_at(double s) const {
   const Piece& q = piece_at(s);
   if (q.radius == 0.0) return Vec2::Zero();
-  const double phi = q.angle0 + std::copysign(std::clamp(s - q.s0, 0.0, q.length) / q.radius, q.turn);
+  const double phi = q.angle_at(s);
   return -Vec2(std::cos(phi), std::sin(phi)) / q.radius;
 }
 
@@ -145,26 +149,22 @@ Vec2 Trajectory::position(double t) const {
   if (pieces_.empty()) return origin_;
   const double s = progress(t).s;
   const Piece& q = piece_at(s);
-  const double along = std::clamp(s - q.s0, 0.0, q.length);
-  if (q.radius == 0.0) return q.start + along * q.direction;
-  const double phi = q.angle0 + std::copysign(along / q.radius, q.turn);
+  if (q.radius == 0.0) return q.start + std::clamp(s - q.s0, 0.0, q.length) * q.direction;
+  const double phi = q.angle_at(s);
   return q.centre + q.radius * Vec2(std::cos(phi), std::sin(phi));
 }
 
 Vec2 Trajectory::velocity(double t) const {
   if (pieces_.empty()) return Vec2::Zero();
   const Progress p = progress(t);
-  // Past the end with constant speed the velocity keeps its end value (see the header).
-  const double rate = ramp_ == 0.0 ? peak_speed_ : p.rate;
-  return rate * direction_at(p.s);
+  return p.rate * direction_at(p.s);
 }
 
 Vec2 Trajectory::acceleration(double t) const {
   if (pieces_.empty()) return Vec2::Zero();
   const Progress p = progress(t);
-  const double rate = ramp_ == 0.0 ? peak_speed_ : p.rate;
   // Along the path s'' and centripetal s'^2 / R towards the arc centre.
-  return p.rate_change * direction_at(p.s) + rate * rate * curvature_at(p.s);
+  return p.rate_change * direction_at(p.s) + p.rate * p.rate * curvature_at(p.s);
 }
 
 Polyline Trajectory::sample(double max_chord_error) const {

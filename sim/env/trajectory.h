@@ -33,6 +33,8 @@ class Trajectory {
     Vec2 centre = Vec2::Zero();   // m, arc centre
     double angle0 = 0.0;          // rad, polar angle of `start` about `centre`
     double turn = 0.0;            // rad, signed sweep, > 0 counter-clockwise (a left turn)
+    // rad, polar angle about `centre` of the point at path length s (clamped to the arc).
+    double angle_at(double s) const;
   };
 
   // corners: at least one point, m (consecutive duplicates and straight-through points are
@@ -43,8 +45,9 @@ class Trajectory {
   double length() const { return length_; }      // m
   double duration() const { return duration_; }  // s, length / speed, plus ramp_time with ramps
   double speed() const { return speed_; }        // m/s, the cruising speed asked for
-  // At time t (s), clamped to [0, duration()]: past the end these stay at their end values (the
-  // velocity does not drop to zero; a caller that stops at the goal checks t >= duration()).
+  // At time t (s), clamped to [0, duration()]: past the end these stay at their end values
+  // (without ramps the velocity does not drop to zero: a caller that stops at the goal checks
+  // t >= duration(); with ramps it is zero there).
   // A single-point trajectory has zero velocity and acceleration.
   Vec2 position(double t) const;      // m
   Vec2 velocity(double t) const;      // m/s

@@ -58,8 +58,8 @@ class ViscousDampingModule : public ForceModule {
 //    itself): every node, the cross-flow principle with separate normal and tangential
 //    coefficients, f = -c_n |v.n| (v.n) n - c_t |v.t| (v.t) t, -df/dv = 2 c_n |v.n| n n^T +
 //    2 c_t |v.t| t t^T, where t is the node's unit tangent at the start of the step (lagged, as
-//    friction's normals are: the Jacobian stays exact and symmetric; the direction lags by one
-//    step, far below the rod's rotation per step).
+//    friction's normals are: the Jacobian stays exact and symmetric; the direction is off by the
+//    rod's rotation within one step).
 // Both Jacobians are symmetric, positive semi-definite and 0 at v = 0. Channel force/drag.
 class QuadraticDragModule : public ForceModule {
  public:
