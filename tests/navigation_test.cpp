@@ -5,8 +5,10 @@
 // step from 1e-4 to 1e-2 s either succeeds or stops with a message.
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cmath>
 
+#include "sim/io/maze_json.h"
 #include "sim/io/scene_reader.h"
 #include "sim/run/run.h"
 
@@ -119,6 +121,12 @@ TEST(Navigation, MazeSceneWithoutDurationRunsToTheGoal) {
   const auto nav = prepare_navigation(implicit);
   EXPECT_NEAR(implicit.run.duration, nav->trajectory->duration() + 2.0, 1e-12);
   EXPECT_GT(implicit.run.duration, 10.0) << "longer than the free-space default";
+  // `vascsim maze` writes the scene with the duration a run would use (shortest round-trip
+  // digits, as the JSON writer prints doubles).
+  char digits[32];
+  const auto end = std::to_chars(digits, digits + sizeof digits, implicit.run.duration).ptr;
+  const std::string document = maze_document(read_scene_text(R"({"maze": {"seed": 4}})", "implicit.json"));
+  EXPECT_NE(document.find("\"duration\": " + std::string(digits, end)), std::string::npos);
   Scene named = read_scene_text(R"({"maze": {"seed": 4}, "run": {"duration": 5}})", "named.json");
   prepare_navigation(named);
   EXPECT_EQ(named.run.duration, 5.0);
