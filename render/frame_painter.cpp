@@ -88,6 +88,18 @@ void scale_bar(Canvas& c, glm::vec2 left, double max_px, double px_per_metre, fl
 float actuation_arrow_width(float frame_height) { return std::max(3.0f, frame_height / 200.0f); }
 float contact_arrow_width(float frame_height) { return std::max(2.0f, frame_height / 280.0f); }
 
+double max_node_force(const std::vector<double>& f) {
+  double m = 0;
+  for (std::size_t i = 0; i + 1 < f.size(); i += 2) m = std::max(m, std::hypot(f[i], f[i + 1]));
+  return m;
+}
+
+constexpr Rgba kOverlayRod = hex(0x7B2FBE, 0.8f);
+constexpr Rgba kOverlayEdge = hex(0x3F1463, 0.8f);
+constexpr Rgba kFriction = hex(0x2B8A3E);
+constexpr Rgba kDrag = hex(0x0C8599);
+constexpr Rgba kNode = hex(0xFFFFFF);
+
 }  // namespace
 
 double typical_peak(std::vector<double> v) {
@@ -98,48 +110,62 @@ double typical_peak(std::vector<double> v) {
   return v[k];
 }
 
-ForceScales choose_force_scales(const FrameSource& source, const ViewOptions& view) {
+ForcePeaks measure_force_peaks(const FrameSource& source) {
   const std::size_t frames = source.frame_count();
   const std::size_t step = std::max<std::size_t>(1, frames / 2000);
-  std::vector<double> act, con;
+  std::vector<double> act, con, drag;
   FrameState f;
   for (std::size_t i = 0; i < frames; i += step) {
     source.frame(i, f);
     act.push_back(f.actuation_total().norm());
     con.push_back(f.max_contact());
+    drag.push_back(max_node_force(f.drag));
   }
-  const double peak_act = typical_peak(act), peak_con = typical_peak(con);
+  return {typical_peak(act), typical_peak(con), typical_peak(drag)};
+}
+
+ForceScales scales_for(const ForcePeaks& peaks, const View& view) {
   ForceScales s;
-  const double span = std::min(view.width * (view.panel && view.width >= 1.2 * view.height ? 0.72 : 1.0),
-                               static_cast<double>(view.height));
-  s.unit = force_unit(std::max(peak_act, peak_con));
+  const double span = std::min(view.width * (view.side_panel() ? 0.72 : 1.0), static_cast<double>(view.height));
+  s.unit = force_unit(std::max(peaks.actuation, peaks.contact));
   // A typical large force draws this long: visible, yet short of crossing the maze. Rarer,
   // larger forces draw longer, up to a cap (the HUD gives their value).
-  if (peak_act > 0) {
-    s.actuation_px_per_newton = view.actuation_px_per_newton > 0 ? view.actuation_px_per_newton : 0.16 * span / peak_act;
-    s.actuation_reference = nice_floor(peak_act);
+  if (peaks.actuation > 0) {
+    s.actuation_px_per_newton =
+        view.actuation_px_per_newton > 0 ? view.actuation_px_per_newton : 0.16 * span / peaks.actuation;
+    s.actuation_reference = nice_floor(peaks.actuation);
     if (view.actuation_px_per_newton <= 0) s.actuation_max_px = 0.4 * span;
   }
-  if (peak_con > 0) {
-    s.contact_px_per_newton = view.contact_px_per_newton > 0 ? view.contact_px_per_newton : 0.10 * span / peak_con;
-    s.contact_reference = nice_floor(peak_con);
+  if (peaks.contact > 0) {
+    s.contact_px_per_newton = view.contact_px_per_newton > 0 ? view.contact_px_per_newton : 0.10 * span / peaks.contact;
+    s.contact_reference = nice_floor(peaks.contact);
     if (view.contact_px_per_newton <= 0) s.contact_max_px = 0.25 * span;
+  }
+  if (peaks.drag > 0) {
+    s.drag_px_per_newton = 0.10 * span / peaks.drag;
+    s.drag_reference = nice_floor(peaks.drag);
+    s.drag_max_px = 0.25 * span;
   }
   return s;
 }
 
-FramePainter::FramePainter(const LogMetadata& metadata, const ViewOptions& view, const ForceScales& scales,
+ForceScales choose_force_scales(const FrameSource& source, const View& view) {
+  return scales_for(measure_force_peaks(source), view);
+}
+
+FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const ForceScales& scales,
                            const FrameState& first_frame)
     : meta_(metadata), view_(view), scales_(scales), world_(world_box(metadata, first_frame)) {
   const double w = view.width, h = view.height;
-  side_panel_ = view.panel && w >= 1.2 * h;
+  side_panel_ = view.side_panel();
+  const bool hud = view.layers.has(Layer::kHud), legend = view.layers.has(Layer::kLegend);
   font_px_ = std::max(9, static_cast<int>(std::lround(h / 36.0)));
   map_x0_ = 0;
   // Without a side panel the HUD card takes a band across the top: the map starts below it, so
   // the card never hides a wall or the rod.
   // Likewise the legend (arrow scales, scale bar) takes a band across the bottom.
-  map_y0_ = view.panel && !side_panel_ ? card_bottom() + 0.4f * static_cast<float>(font_px_) : 0.0f;
-  map_y1_ = static_cast<float>(view.panel && !side_panel_ ? h - band_height() : h);
+  map_y0_ = hud && !side_panel_ ? card_bottom() + 0.4f * static_cast<float>(font_px_) : 0.0f;
+  map_y1_ = static_cast<float>(legend && !side_panel_ ? h - band_height() : h);
   // The panel needs about 15 characters of width whatever the frame size.
   map_x1_ = static_cast<float>(side_panel_ ? std::round(w - std::max(0.28 * w, 15.0 * font_px_)) : w);
   const Vec2 size = world_.max - world_.min;
@@ -147,7 +173,9 @@ FramePainter::FramePainter(const LogMetadata& metadata, const ViewOptions& view,
 }
 
 glm::dmat3 FramePainter::camera(const FrameState& frame) const {
-  const Vec2 centre = view_.camera == CameraMode::kFollow ? frame.tip() : Vec2(0.5 * (world_.min + world_.max));
+  const Vec2 centre = view_.camera == CameraMode::kFollow   ? frame.tip()
+                      : view_.camera == CameraMode::kCentre ? view_.centre
+                                                            : Vec2(0.5 * (world_.min + world_.max));
   glm::dmat3 m(1.0);
   m[0][0] = scale_;
   m[1][1] = -scale_;  // y up in the world, down on screen
@@ -161,68 +189,104 @@ glm::dvec2 FramePainter::to_pixel(const FrameState& frame, Vec2 world) const {
   return {q.x, q.y};
 }
 
-void FramePainter::paint(Canvas& c, const FrameState& frame, const std::vector<Vec2>& trail) {
-  c.clear(kPage);
-  paint_world(c, camera(frame), frame, trail);
-  if (view_.panel) paint_panel(c, frame);
+ViewTransform FramePainter::transform(const FrameState& frame) const {
+  const glm::dmat3 m = camera(frame);
+  return {m[0][0], m[2][0], m[2][1]};
 }
 
-void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState& f, const std::vector<Vec2>& trail) {
+void FramePainter::paint(Canvas& c, const FrameState& frame, const std::vector<Vec2>& trail,
+                         const FrameState* overlay) {
+  c.clear(kPage);
+  paint_world(c, camera(frame), frame, trail, overlay);
+  if (view_.panel()) paint_panel(c, frame);
+}
+
+void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState& f, const std::vector<Vec2>& trail,
+                               const FrameState* overlay) {
+  const LayerSet& on = view_.layers;
   const float h = static_cast<float>(view_.height);
   const float s = static_cast<float>(scale_);
   // Lumen: the environment's extent, so the walls read as the boundary of a channel.
   const glm::vec2 b0 = apply(m, meta_.bounds.min), b1 = apply(m, meta_.bounds.max);
-  if ((meta_.bounds.max - meta_.bounds.min).minCoeff() > 0)
+  if (on.has(Layer::kLumen) && (meta_.bounds.max - meta_.bounds.min).minCoeff() > 0)
     c.fill_rect(glm::min(b0, b1), glm::max(b0, b1), kLumen);
   const float min_wall = std::max(2.0f, h / 300.0f);
-  for (const auto& w : meta_.walls)
-    c.capsule(apply(m, w.a), apply(m, w.b), 0.5f * std::max(min_wall, static_cast<float>(w.thickness) * s), kWall);
+  if (on.has(Layer::kWalls))
+    for (const auto& w : meta_.walls)
+      c.capsule(apply(m, w.a), apply(m, w.b), 0.5f * std::max(min_wall, static_cast<float>(w.thickness) * s), kWall);
 
-  scratch_.clear();
-  for (const auto& p : meta_.path) scratch_.push_back(apply(m, p));
-  const float line = std::max(1.5f, h / 400.0f);
-  c.dashed_polyline(scratch_, line, 4 * line, 3 * line, kPath);
+  if (on.has(Layer::kPath)) {
+    scratch_.clear();
+    for (const auto& p : meta_.path) scratch_.push_back(apply(m, p));
+    const float line = std::max(1.5f, h / 400.0f);
+    c.dashed_polyline(scratch_, line, 4 * line, 3 * line, kPath);
+  }
 
   const float marker = std::max(4.0f, h / 90.0f);
-  if (!meta_.path.empty() || meta_.start != meta_.goal) {
+  if (on.has(Layer::kStartGoal) && (!meta_.path.empty() || meta_.start != meta_.goal)) {
     c.disc(apply(m, meta_.start), marker, kStart);
     c.disc(apply(m, meta_.start), 0.4f * marker, hex(0xFFFFFF));
     c.ring(apply(m, meta_.goal), marker, 0.45f * marker, kGoal);
     c.disc(apply(m, meta_.goal), 0.3f * marker, kGoal);
   }
 
-  scratch_.clear();
-  for (const auto& p : trail) scratch_.push_back(apply(m, p));
-  c.polyline(scratch_, std::max(2.0f, h / 300.0f), kTrail);
+  if (on.has(Layer::kTrail)) {
+    scratch_.clear();
+    for (const auto& p : trail) scratch_.push_back(apply(m, p));
+    c.polyline(scratch_, std::max(2.0f, h / 300.0f), kTrail);
+  }
 
-  if (f.has_reference) c.ring(apply(m, f.reference), 0.6f * marker, 0.25f * marker, kPath);
+  if (on.has(Layer::kPath) && f.has_reference) c.ring(apply(m, f.reference), 0.6f * marker, 0.25f * marker, kPath);
 
-  // The rod at its true radius, never thinner than min_rod_width_px, with a dark edge.
-  const float r = std::max(static_cast<float>(meta_.rod_outer_radius * scale_), 0.5f * float(view_.min_rod_width_px));
+  if (overlay && on.has(Layer::kRod)) paint_rod(c, m, *overlay, kOverlayRod, kOverlayEdge, kOverlayEdge);
+  if (on.has(Layer::kRod)) paint_rod(c, m, f, kRod, kRodEdge, kTip);
   scratch_.clear();
   for (std::size_t i = 0; i < f.node_count(); ++i) scratch_.push_back(apply(m, f.node(i)));
-  c.polyline(scratch_, 2 * r + 2.0f, kRodEdge);
-  c.polyline(scratch_, 2 * r, kRod);
-  c.disc(scratch_.back(), r + 1.5f, kTip);
+  if (on.has(Layer::kNodes)) {
+    const float r = std::max(1.5f, std::min(4.0f, static_cast<float>(meta_.rod_outer_radius * scale_) * 0.6f));
+    for (const auto& p : scratch_) {
+      c.disc(p, r + 1.0f, kRodEdge);
+      c.disc(p, r, kNode);
+    }
+  }
 
   // Arrows start at the node they act on and point along the force (screen y flips).
   const float contact_w = contact_arrow_width(h);
-  if (scales_.contact_px_per_newton > 0 && !f.contact.empty()) {
-    for (std::size_t i = 0; i < f.node_count(); ++i) {
-      glm::vec2 d(static_cast<float>(f.contact[2 * i] * scales_.contact_px_per_newton),
-                  static_cast<float>(-f.contact[2 * i + 1] * scales_.contact_px_per_newton));
-      const float len = std::sqrt(d.x * d.x + d.y * d.y);
-      if (len < 1.0f) continue;
-      if (len > scales_.contact_max_px) d *= static_cast<float>(scales_.contact_max_px) / len;
-      c.arrow(scratch_[i], scratch_[i] + d, contact_w, kContact);
-    }
-  }
-  if (scales_.actuation_px_per_newton > 0 && !f.actuation.empty()) {
+  if (on.has(Layer::kDrag)) paint_arrows(c, f.drag, scales_.drag_px_per_newton, scales_.drag_max_px, contact_w, kDrag);
+  if (on.has(Layer::kFriction))
+    paint_arrows(c, f.friction, scales_.contact_px_per_newton, scales_.contact_max_px, contact_w, kFriction);
+  if (on.has(Layer::kContact))
+    paint_arrows(c, f.contact, scales_.contact_px_per_newton, scales_.contact_max_px, contact_w, kContact);
+  if (on.has(Layer::kMagnetic) && scales_.actuation_px_per_newton > 0 && !f.actuation.empty()) {
     const Vec2 F = f.actuation_total() * scales_.actuation_px_per_newton;
     glm::vec2 d(static_cast<float>(F.x()), static_cast<float>(-F.y()));
     const float len = std::sqrt(d.x * d.x + d.y * d.y);
     if (len > scales_.actuation_max_px) d *= static_cast<float>(scales_.actuation_max_px) / len;
     if (len >= 1.0f) c.arrow(scratch_.back(), scratch_.back() + d, actuation_arrow_width(h), kActuation);
+  }
+}
+
+// The rod at its true radius, never thinner than min_rod_width_px, with a dark edge.
+void FramePainter::paint_rod(Canvas& c, const glm::dmat3& m, const FrameState& f, Rgba body, Rgba edge, Rgba tip) {
+  const float r = std::max(static_cast<float>(meta_.rod_outer_radius * scale_), 0.5f * float(view_.min_rod_width_px));
+  scratch_.clear();
+  for (std::size_t i = 0; i < f.node_count(); ++i) scratch_.push_back(apply(m, f.node(i)));
+  if (scratch_.empty()) return;
+  c.polyline(scratch_, 2 * r + 2.0f, edge);
+  c.polyline(scratch_, 2 * r, body);
+  c.disc(scratch_.back(), r + 1.5f, tip);
+}
+
+// Per-node arrows from the node positions in scratch_.
+void FramePainter::paint_arrows(Canvas& c, const std::vector<double>& forces, double px_per_newton, double max_px,
+                                float width, Rgba colour) {
+  if (px_per_newton <= 0 || forces.size() != 2 * scratch_.size()) return;
+  for (std::size_t i = 0; i < scratch_.size(); ++i) {
+    glm::vec2 d(static_cast<float>(forces[2 * i] * px_per_newton), static_cast<float>(-forces[2 * i + 1] * px_per_newton));
+    const float len = std::sqrt(d.x * d.x + d.y * d.y);
+    if (len < 1.0f) continue;
+    if (len > max_px) d *= static_cast<float>(max_px) / len;
+    c.arrow(scratch_[i], scratch_[i] + d, width, colour);
   }
 }
 
@@ -265,6 +329,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   const float W = static_cast<float>(view_.width), H = static_cast<float>(view_.height);
   const int fs = font_px_, small = std::max(9, static_cast<int>(std::lround(0.8 * fs)));
   const float pad = 0.8f * fs, row = 1.45f * fs;
+  const bool hud = view_.layers.has(Layer::kHud), legend = view_.layers.has(Layer::kLegend);
   float x0, y0, x1;
   if (side_panel_) {
     x0 = map_x1_;
@@ -273,6 +338,8 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     c.fill_rect({x0, 0}, {W, H}, kPanel);
     c.fill_rect({x0, 0}, {x0 + 1.0f, H}, kPanelEdge);
   } else {
+    if (legend) paint_band(c);
+    if (!hud) return;
     // Narrow frames: a compact translucent card over the map's top-left corner.
     x0 = 0.5f * pad;
     y0 = 0.5f * pad;
@@ -281,31 +348,33 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   }
   const float lx = x0 + pad, rx = x1 - pad;
   float y = y0 + pad + fs;
-  if (!meta_.title.empty()) {
-    c.text(meta_.title, {lx, y}, static_cast<int>(std::lround(1.1 * fs)), kInk);
-    y += 1.3f * row;
-  }
-  const DisplayUnit mm = length_unit(0.01);
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.3f s", f.time);
-  auto field = [&](const char* label, const std::string& value) {
-    c.text(label, {lx, y}, fs, kMuted);
-    c.text(value, {rx, y}, fs, kInk, TextAlign::kRight);
-    y += row;
-  };
-  field("Time", buf);
-  field("Tip error", f.tip_error >= 0 ? format_value(f.tip_error, mm, 2) : std::string("n/a"));
-  field("Magnetic force", f.actuation.empty() ? std::string("n/a") : format_value(f.actuation_total().norm(), scales_.unit, 2));
-  field("Max contact", f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
-  if (!side_panel_) {
-    paint_band(c);
-    return;
+  if (hud) {
+    if (!meta_.title.empty()) {
+      c.text(meta_.title, {lx, y}, static_cast<int>(std::lround(1.1 * fs)), kInk);
+      y += 1.3f * row;
+    }
+    const DisplayUnit mm = length_unit(0.01);
+    std::snprintf(buf, sizeof buf, "%.3f s", f.time);
+    auto field = [&](const char* label, const std::string& value) {
+      c.text(label, {lx, y}, fs, kMuted);
+      c.text(value, {rx, y}, fs, kInk, TextAlign::kRight);
+      y += row;
+    };
+    field("Time", buf);
+    field("Tip error", f.tip_error >= 0 ? format_value(f.tip_error, mm, 2) : std::string("n/a"));
+    field("Magnetic force",
+          f.actuation.empty() ? std::string("n/a") : format_value(f.actuation_total().norm(), scales_.unit, 2));
+    field("Max contact", f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
   }
+  if (!side_panel_ || !legend) return;
 
   // Legend: each symbol as drawn on the map; force arrows at the length of a round value.
-  y += 0.6f * row;
-  c.box({lx, y - fs}, {rx, y - fs + 1.0f}, kPanelEdge);
-  y += 0.4f * row;
+  if (hud) {
+    y += 0.6f * row;
+    c.box({lx, y - fs}, {rx, y - fs + 1.0f}, kPanelEdge);
+    y += 0.4f * row;
+  }
   const float sym_end = lx + 2.2f * fs, text_x = lx + 2.8f * fs, mid = -0.35f * fs;
   auto entry = [&](const std::string& label) {
     c.text(label, {text_x, y}, small, kInk);
@@ -321,6 +390,11 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, actuation_arrow_width(H),
               "Magnetic force");
   arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, contact_arrow_width(H), "Contact force");
+  if (view_.layers.has(Layer::kFriction) && !f.friction.empty())
+    arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kFriction, contact_arrow_width(H),
+                "Friction force");
+  if (view_.layers.has(Layer::kDrag) && !f.drag.empty())
+    arrow_entry(scales_.drag_px_per_newton, scales_.drag_reference, kDrag, contact_arrow_width(H), "Drag force");
   const float r = std::max(0.5f * float(view_.min_rod_width_px), static_cast<float>(meta_.rod_outer_radius * scale_));
   c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kRodEdge);
   c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kRod);

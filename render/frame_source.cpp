@@ -30,6 +30,20 @@ std::string log_path_of(const std::string& run_path) {
 
 namespace {
 
+// Every channel's value count must match its layout, so no reader of a record can run past the
+// values it was told are there (a corrupt or hand-made log must fail here, not in the painter).
+void check_channel_counts(const FrameLogHeader& h, const std::string& path) {
+  for (const LogChannel& c : h.channels) {
+    const std::uint32_t expected = c.layout == ChannelLayout::kNodeVectors ? 2 * h.node_count
+                                   : c.layout == ChannelLayout::kVector    ? 2u
+                                                                           : std::max<std::uint32_t>(c.count, 1);
+    if (c.count != expected)
+      throw InputError(path + ": channel '" + c.name.substr(0, 64) + "' holds " + std::to_string(c.count) +
+                       " values per frame, expected " + std::to_string(expected) +
+                       (c.layout == ChannelLayout::kNodeVectors ? " (2 per node)" : ""));
+  }
+}
+
 int require_layout(const FrameLogHeader& h, const char* name, ChannelLayout layout, const std::string& path) {
   const int index = h.find_channel(name);
   if (index >= 0 && h.channels[static_cast<std::size_t>(index)].layout != layout)
@@ -45,14 +59,31 @@ FrameSource::FrameSource(const std::string& run_path) : log_path_(log_path_of(ru
   position_ = require_layout(h, channel::kPosition, ChannelLayout::kNodeVectors, log_path_);
   if (position_ < 0) throw InputError(log_path_ + ": frame log has no 'position' channel");
   if (h.node_count < 2) throw InputError(log_path_ + ": frame log rod has fewer than 2 nodes");
+  check_channel_counts(h, log_path_);
   actuation_ = require_layout(h, channel::kActuationForce, ChannelLayout::kNodeVectors, log_path_);
   contact_ = require_layout(h, channel::kContactForce, ChannelLayout::kNodeVectors, log_path_);
+  friction_ = require_layout(h, channel::kFrictionForce, ChannelLayout::kNodeVectors, log_path_);
+  drag_ = require_layout(h, channel::kDragForce, ChannelLayout::kNodeVectors, log_path_);
   reference_ = require_layout(h, channel::kTipReference, ChannelLayout::kVector, log_path_);
   tip_error_ = require_layout(h, channel::kTipError, ChannelLayout::kScalars, log_path_);
   frame_count_ = reader_.frame_count();
   if (frame_count_ == 0) throw InputError(log_path_ + ": frame log has no complete frame");
   first_time_ = reader_.time_of(0);
   last_time_ = reader_.time_of(frame_count_ - 1);
+}
+
+bool FrameSource::refresh() {
+  const std::size_t n = reader_.frame_count();
+  if (n <= frame_count_) return false;
+  frame_count_ = n;
+  last_time_ = reader_.time_of(n - 1);
+  return true;
+}
+
+Vec2 FrameSource::tip_of(std::size_t i) const {
+  double xy[2];
+  reader_.read_values(i, reader_.header().channel_offset(position_) + 2 * (reader_.header().node_count - 1), 2, xy);
+  return {xy[0], xy[1]};
 }
 
 void FrameSource::unpack(const std::vector<double>& r, FrameState& out) const {
@@ -69,6 +100,8 @@ void FrameSource::unpack(const std::vector<double>& r, FrameState& out) const {
   copy(position_, out.position);
   copy(actuation_, out.actuation);
   copy(contact_, out.contact);
+  copy(friction_, out.friction);
+  copy(drag_, out.drag);
   out.has_reference = reference_ >= 0;
   if (out.has_reference) {
     const std::size_t off = h.channel_offset(reference_);
@@ -96,6 +129,8 @@ void FrameSource::at_time(double t, FrameState& out) const {
   blend(out.position, next_.position);
   blend(out.actuation, next_.actuation);
   blend(out.contact, next_.contact);
+  blend(out.friction, next_.friction);
+  blend(out.drag, next_.drag);
   out.reference += w * (next_.reference - out.reference);
   if (out.tip_error >= 0 && next_.tip_error >= 0) out.tip_error += w * (next_.tip_error - out.tip_error);
   out.time = t;

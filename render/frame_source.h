@@ -19,6 +19,8 @@ struct FrameState {
   std::vector<double> position;    // m, 2 per node
   std::vector<double> actuation;   // N, 2 per node; empty if the log has no actuation channel
   std::vector<double> contact;     // N, 2 per node; empty if absent
+  std::vector<double> friction;    // N, 2 per node; empty if absent
+  std::vector<double> drag;        // N, 2 per node; empty if absent
   bool has_reference = false;
   Vec2 reference = Vec2::Zero();   // m
   double tip_error = -1;           // m; < 0 if unknown
@@ -51,6 +53,12 @@ class FrameSource {
   // Index of the last logged frame with time <= t.
   std::size_t frame_at_time(double t) const { return reader_.frame_at_time(t); }
   double time_of(std::size_t i) const { return reader_.time_of(i); }
+  // The tip (last node) of logged frame i, reading only its two values.
+  Vec2 tip_of(std::size_t i) const;
+  // Re-polls the log for frames appended since (a run still writing it). Returns true if the
+  // frame count changed.
+  bool refresh();
+  const FrameLogHeader& header() const { return reader_.header(); }
 
  private:
   void unpack(const std::vector<double>& record, FrameState& out) const;
@@ -60,7 +68,7 @@ class FrameSource {
   LogMetadata metadata_;
   std::size_t frame_count_ = 0;
   double first_time_ = 0, last_time_ = 0;
-  int position_ = -1, actuation_ = -1, contact_ = -1, reference_ = -1, tip_error_ = -1;
+  int position_ = -1, actuation_ = -1, contact_ = -1, friction_ = -1, drag_ = -1, reference_ = -1, tip_error_ = -1;
   mutable std::vector<double> record_a_, record_b_;
   mutable FrameState next_;
 };

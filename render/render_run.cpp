@@ -11,7 +11,9 @@
 #include "render/frame_source.h"
 #include "render/plots.h"
 #include "render/png_writer.h"
+#include "render/tip_trail.h"
 #include "render/video_encoder.h"
+#include "render/view_frame.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -30,7 +32,34 @@ void validate_render_options(const RenderOptions& o) {
   if (!(o.speed > 0) || !std::isfinite(o.speed)) throw InputError("speed: expected a positive number");
   if (!(v.zoom > 0) || !std::isfinite(v.zoom)) throw InputError("zoom: expected a positive number");
   if (o.from && o.to && *o.from > *o.to) throw InputError("time range: --from must not be after --to");
+  if (o.still && !std::isfinite(*o.still)) throw InputError("still: expected a finite time");
+  if (o.still && o.png_path.empty()) throw InputError("--still needs --png FILE");
+  if (!o.still && !o.png_path.empty()) throw InputError("--png FILE needs --still T (for a sequence use --png-dir)");
+  if (!o.still && !o.overlay_run.empty()) throw InputError("--overlay is for a still (--still T --png FILE)");
 }
+
+namespace {
+
+// `vascsim render RUN --still T --png FILE`: one view, the same pixels the replay server sends.
+RenderReport render_still(const FrameSource& source, const RenderOptions& o) {
+  std::error_code ec;
+  if (fs::exists(o.png_path, ec) && !o.force) throw InputError(o.png_path + ": exists (use --force to overwrite)");
+  std::unique_ptr<FrameSource> overlay;
+  if (!o.overlay_run.empty()) overlay = std::make_unique<FrameSource>(o.overlay_run);
+  ViewFrameInputs in;
+  in.source = &source;
+  in.peaks = measure_force_peaks(source);
+  in.overlay = overlay.get();
+  Canvas canvas(o.view.width, o.view.height, o.aa);
+  std::vector<std::uint8_t> rgba;
+  render_view_frame(canvas, in, o.view, *o.still, rgba);
+  write_png(o.png_path, rgba.data(), o.view.width, o.view.height);
+  RenderReport report;
+  report.frames = 1;
+  return report;
+}
+
+}  // namespace
 
 namespace {
 
@@ -67,41 +96,13 @@ void prepare_directory(const std::string& dir, const char* what) {
   fs::remove(probe, ec);
 }
 
-// Appends the tip positions of logged frames up to `t` to the trail, skipping points closer
-// than `spacing` (m) to the last kept one so the trail stays a few thousand points at most.
-class TrailBuilder {
- public:
-  TrailBuilder(const FrameSource& source, double t0, double spacing)
-      : source_(source), next_(source.frame_at_time(t0)), spacing_(spacing) {}
-  void advance(const FrameState& now, std::vector<Vec2>& trail) {
-    while (next_ < source_.frame_count() && source_.time_of(next_) <= now.time) {
-      source_.frame(next_++, scratch_);
-      add(scratch_.tip(), trail, false);
-    }
-    add(now.tip(), trail, true);
-  }
-
- private:
-  void add(Vec2 p, std::vector<Vec2>& trail, bool provisional) {
-    if (had_provisional_) trail.pop_back();
-    had_provisional_ = false;
-    if (!trail.empty() && (p - trail.back()).norm() < spacing_ && !provisional) return;
-    trail.push_back(p);
-    had_provisional_ = provisional;  // the interpolated point is replaced at the next frame
-  }
-  const FrameSource& source_;
-  std::size_t next_;
-  double spacing_;
-  bool had_provisional_ = false;
-  FrameState scratch_;
-};
-
 }  // namespace
 
 RenderReport render_run(const std::string& run_dir, const RenderOptions& options_in) {
   RenderOptions o = options_in;
   validate_render_options(o);
   FrameSource source(run_dir);
+  if (o.still) return render_still(source, o);
   if (o.mp4_path.empty() && o.png_dir.empty() && o.plots_dir.empty()) {
     std::error_code ec;
     o.mp4_path = fs::is_directory(run_dir, ec) ? (fs::path(run_dir) / "video.mp4").string()
@@ -130,7 +131,7 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   if (o.mp4_path.empty() && o.png_dir.empty()) return report;
 
   const auto count = static_cast<std::size_t>(std::floor((t1 - t0) * o.fps / o.speed + 1e-9)) + 1;
-  const ViewOptions& view = o.view;
+  const View& view = o.view;
   std::unique_ptr<VideoEncoder> video;
   if (!o.mp4_path.empty()) {
     video = std::make_unique<VideoEncoder>(o.mp4_path, VideoSettings{view.width, view.height, o.fps, 20});
@@ -138,7 +139,7 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   }
 
   FrameState state;
-  source.at_time(t0, state);
+  source.frame(0, state);
   const ForceScales scales = choose_force_scales(source, view);
   FramePainter painter(source.metadata(), view, scales, state);
   Canvas canvas(view.width, view.height, o.aa);
@@ -172,14 +173,18 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   const int workers = png ? 2 : 1;
   FramePipeline pipeline(static_cast<std::size_t>(view.width) * view.height * 4, workers, workers + 2, consume);
 
-  TrailBuilder trail_builder(source, t0, 1.0 / painter.pixels_per_metre());
-  std::vector<Vec2> trail;
+  // The trail starts at the log's first frame, also for a clip: the same trail as a still at
+  // that time (render_view_frame), and the path that led there.
+  TipTrail trail(1.0 / painter.pixels_per_metre());
+  const auto tip_of = [&](std::size_t i) { return source.tip_of(i); };
   for (std::size_t k = 0; k < count; ++k) {
-    source.at_time(t0 + static_cast<double>(k) * o.speed / o.fps, state);
-    trail_builder.advance(state, trail);
-    painter.paint(canvas, state, trail);
+    const double t = t0 + static_cast<double>(k) * o.speed / o.fps;
+    source.at_time(t, state);
+    trail.advance(frames_through(source, t), tip_of);
+    painter.paint(canvas, state, trail.points(state.tip()));
     canvas.finish(pipeline.acquire().data());
     pipeline.submit(k);
+    if (o.progress && !o.progress(k + 1, count)) throw InputError("render cancelled");
   }
   pipeline.finish();
   if (video) {

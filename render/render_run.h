@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,12 +20,18 @@ struct RenderOptions {
   std::string mp4_path;   // H.264 MP4 (VP9 WebM if H.264 is unavailable)
   std::string png_dir;    // frame_000000.png, frame_000001.png, ...
   std::string plots_dir;  // tip_trajectory.png, actuation_force.png, snapshots.png, ...
-  ViewOptions view;       // size, camera, zoom, arrow scales
+  std::optional<double> still;  // s: render only the view at this time, to png_path
+  std::string png_path;         // the still's PNG file
+  std::string overlay_run;      // compare: this run's rod drawn over the map (a still only)
+  View view;              // size, camera, layers, arrow scales
   int fps = 30;           // video frames per second
   double speed = 1.0;     // simulated seconds per video second
   std::optional<double> from, to;  // s, simulated time range (default: the whole log)
   bool force = false;     // overwrite existing outputs
   AntiAliasing aa = AntiAliasing::kAnalytic;
+  // Called after each video or PNG frame with (frames done, frames in all); returning false
+  // cancels the render (an InputError, and no output appears).
+  std::function<bool(std::size_t, std::size_t)> progress;
 };
 
 struct RenderReport {

@@ -69,10 +69,10 @@ int extent(const Picture& p, glm::dvec2 from, int dx, int dy, Rgba c) {
 void draw(const std::string& log, double act_scale, double con_scale, Picture& pic, FramePainter** painter_out,
           FrameState& state) {
   FrameSource source(log);
-  ViewOptions view;
+  View view;
   view.width = kW;
   view.height = kH;
-  view.panel = false;
+  view.layers.set(Layer::kHud, false).set(Layer::kLegend, false);
   view.actuation_px_per_newton = act_scale;
   view.contact_px_per_newton = con_scale;
   source.frame(0, state);

@@ -39,7 +39,7 @@ TEST(RenderCamera, FitShowsEveryThickOuterWallAtEveryFrameSize) {
   frame.position = {0.4, 0.5, 0.5, 0.5, 0.6, 0.5};
   const int sizes[][2] = {{640, 480}, {1280, 720}, {1920, 1080}, {480, 640}, {400, 400}};
   for (const auto& size : sizes) {
-    ViewOptions view;
+    View view;
     view.width = size[0];
     view.height = size[1];
     FramePainter painter(meta, view, ForceScales{}, frame);
@@ -68,7 +68,7 @@ TEST(RenderCamera, NarrowFramesShowTheArrowLegendBelowTheMap) {
   scales.contact_px_per_newton = 2e4;
   scales.contact_reference = 1e-3;
   for (const auto& size : {std::array<int, 2>{480, 640}, std::array<int, 2>{400, 400}}) {
-    ViewOptions view;
+    View view;
     view.width = size[0];
     view.height = size[1];
     FramePainter painter(meta, view, scales, frame);
@@ -104,7 +104,7 @@ TEST(RenderCamera, LegendArrowThatDoesNotFitShowsARoundValueAtItsTrueLength) {
   ForceScales scales;
   scales.actuation_px_per_newton = 1e5;
   scales.actuation_reference = 2e-3;
-  ViewOptions view;
+  View view;
   view.width = 360;
   view.height = 640;
   FramePainter painter(meta, view, scales, frame);

@@ -31,7 +31,7 @@ double seconds_since(Clock::time_point start) {
 // Drawing and read-back only, no encoding: the renderer's own cost.
 double draw_fps(const std::string& log, int width, int height, render::AntiAliasing aa, int frames, std::string* gl) {
   render::FrameSource source(log);
-  render::ViewOptions view;
+  render::View view;
   view.width = width;
   view.height = height;
   render::FrameState state;

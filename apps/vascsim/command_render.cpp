@@ -6,6 +6,8 @@
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
 #include "render/render_run.h"
+#include "render/view.h"
+#include "sim/scene/input_error.h"
 
 namespace vascsim::cli {
 
@@ -22,8 +24,14 @@ const std::vector<OptionSpec>& render_options() {
       {"speed", "S", "simulated seconds per video second (default 1)"},
       {"from", "T0", "first simulated time to show, s (default: start of the log)"},
       {"to", "T1", "last simulated time to show, s (default: end of the log)"},
-      {"camera", "fit|follow", "fit the whole maze (default) or follow the tip"},
+      {"still", "T", "render only the view at simulated time T (s) into --png FILE"},
+      {"png", "FILE", "the PNG file of --still"},
+      {"camera", "fit|follow|center", "fit the whole maze (default), follow the tip, or centre on --center"},
       {"zoom", "Z", "magnification over the fitted view (default 1)"},
+      {"center", "X,Y", "centre of the view in metres (implies --camera center)"},
+      {"layers", "a,b,...", "draw exactly these layers (default: all but nodes,friction,drag); see docs/rendering.md"},
+      {"hide", "a,b,...", "do not draw these layers (applied after --layers)"},
+      {"overlay", "RUN_B", "with --still: draw run B's rod at the same time over this run's map"},
       {"actuation-scale", "PX_PER_N", "magnetic force arrow length per newton (default: automatic)"},
       {"contact-scale", "PX_PER_N", "contact force arrow length per newton (default: automatic)"},
       {"aa", "analytic|msaa", "anti-aliasing: analytic edges (default) or 4x multisampling"},
@@ -53,10 +61,22 @@ int run_render_command(int argc, char** argv) {
   o.speed = args.number("speed", 1.0, 1e-9, 1e9);
   if (args.value("from")) o.from = args.number("from", 0, -1e12, 1e12);
   if (args.value("to")) o.to = args.number("to", 0, -1e12, 1e12);
-  const std::string camera = args.value("camera").value_or("fit");
-  if (camera == "fit") o.view.camera = render::CameraMode::kFit;
-  else if (camera == "follow") o.view.camera = render::CameraMode::kFollow;
-  else throw UsageError("--camera: expected fit or follow, got '" + camera + "'");
+  if (args.value("still")) o.still = args.number("still", 0, -1e12, 1e12);
+  o.png_path = args.value("png").value_or("");
+  o.overlay_run = args.value("overlay").value_or("");
+  try {
+    if (args.value("center")) {
+      o.view.centre = render::parse_centre(*args.value("center"));
+      o.view.camera = render::CameraMode::kCentre;
+    }
+    if (args.value("camera")) o.view.camera = render::parse_camera(*args.value("camera"));
+    if (o.view.camera == render::CameraMode::kCentre && !args.value("center"))
+      throw UsageError("--camera center needs --center X,Y");
+    if (args.value("layers")) o.view.layers = render::parse_layer_list(*args.value("layers"));
+    if (args.value("hide")) o.view.layers = render::hide_layers(o.view.layers, *args.value("hide"));
+  } catch (const InputError& e) {
+    throw UsageError(e.what());
+  }
   o.view.zoom = args.number("zoom", 1.0, 1e-3, 1e3);
   o.view.actuation_px_per_newton = args.number("actuation-scale", 0.0, 0.0, 1e15);
   o.view.contact_px_per_newton = args.number("contact-scale", 0.0, 0.0, 1e15);
@@ -71,6 +91,7 @@ int run_render_command(int argc, char** argv) {
   if (!r.video_path.empty())
     std::printf("wrote %s (%zu frames, %s, %d fps)\n", r.video_path.c_str(), r.frames, r.video_codec.c_str(), o.fps);
   if (!o.png_dir.empty()) std::printf("wrote %zu PNG frames to %s\n", r.frames, o.png_dir.c_str());
+  if (o.still) std::printf("wrote %s\n", o.png_path.c_str());
   for (const auto& p : r.plots) std::printf("wrote %s\n", p.c_str());
   return 0;
 }

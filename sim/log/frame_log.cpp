@@ -176,11 +176,30 @@ void FrameLogReader::read(std::size_t i, std::vector<double>& record) const {
 }
 
 double FrameLogReader::time_of(std::size_t i) const {
-  const std::uint64_t offset = data_offset_ + static_cast<std::uint64_t>(i) * header_.record_doubles() * sizeof(double);
   double t = 0.0;
-  if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0 || std::fread(&t, sizeof t, 1, file_) != 1)
-    throw InputError(path_ + ": cannot read the time of frame " + std::to_string(i));
+  read_values(i, 0, 1, &t);
   return t;
+}
+
+void FrameLogReader::read_values(std::size_t i, std::size_t offset, std::size_t count, double* out) const {
+  const std::size_t n = header_.record_doubles();
+  if (offset + count > n) throw std::invalid_argument("FrameLogReader::read_values: values beyond the record");
+  const std::uint64_t at = data_offset_ + (static_cast<std::uint64_t>(i) * n + offset) * sizeof(double);
+  if (std::fseek(file_, static_cast<long>(at), SEEK_SET) != 0 || std::fread(out, sizeof(double), count, file_) != count)
+    throw InputError(path_ + ": cannot read frame " + std::to_string(i) + " (log has " +
+                     std::to_string(frame_count()) + " complete frames)");
+}
+
+void FrameLogReader::read_frames(std::size_t first, std::size_t count, std::vector<double>& records) const {
+  const std::size_t n = header_.record_doubles();
+  records.resize(count * n);
+  if (count == 0) return;
+  const std::uint64_t at = data_offset_ + static_cast<std::uint64_t>(first) * n * sizeof(double);
+  if (std::fseek(file_, static_cast<long>(at), SEEK_SET) != 0 ||
+      std::fread(records.data(), sizeof(double), count * n, file_) != count * n)
+    throw InputError(path_ + ": cannot read frames " + std::to_string(first) + ".." +
+                     std::to_string(first + count - 1) + " (log has " + std::to_string(frame_count()) +
+                     " complete frames)");
 }
 
 std::size_t FrameLogReader::frame_at_time(double t) const {

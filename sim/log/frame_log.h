@@ -85,6 +85,11 @@ class FrameLogReader {
   // Reads frame i (time first, then channels in order) into `record`.
   void read(std::size_t i, std::vector<double>& record) const;
   double time_of(std::size_t i) const;
+  // Reads `count` doubles at `offset` (in doubles, time at 0) inside frame i into `out`.
+  void read_values(std::size_t i, std::size_t offset, std::size_t count, double* out) const;
+  // Reads frames [first, first + count) back to back into `records` (count * record_doubles()):
+  // one read for a streaming pass instead of one per frame.
+  void read_frames(std::size_t first, std::size_t count, std::vector<double>& records) const;
   // The last frame whose time is <= t (0 if t precedes the first frame). Binary search: O(log n)
   // reads of one double each. Requires frame_count() > 0.
   std::size_t frame_at_time(double t) const;
