@@ -22,6 +22,7 @@ const std::vector<Benchmark>& benchmarks() {
       {"traversal", "full maze traversal: wall time and real-time factor per preset", run_bench_traversal},
 #ifdef VASCSIM_HAVE_RENDER
       {"render", "renderer frames/s at 720p and 1080p, MP4 and PNG", run_bench_render},
+      {"replay", "replay server: frame latency from a client, open time and memory on a 10^6-frame log", run_bench_replay},
 #endif
   };
   return table;

@@ -10,6 +10,7 @@ const std::vector<Command>& commands() {
 #ifdef VASCSIM_HAVE_RENDER
       {"render", "render a run's frame log to MP4, PNG frames and plots", run_render_command},
       {"diff", "compare two PNG images (golden-image tests)", run_diff_command},
+      {"replay", "serve a run (or two) to a web browser: scrub, zoom, compare, export", run_replay_command},
 #endif
   };
   return table;

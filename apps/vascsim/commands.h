@@ -21,6 +21,8 @@ int run_bench_traversal(int argc, char** argv);
 #ifdef VASCSIM_HAVE_RENDER
 int run_render_command(int argc, char** argv);
 int run_diff_command(int argc, char** argv);
+int run_replay_command(int argc, char** argv);
+int run_bench_replay(int argc, char** argv);
 int run_bench_render(int argc, char** argv);
 int run_bench_speed(int argc, char** argv);
 int run_bench_accuracy(int argc, char** argv);

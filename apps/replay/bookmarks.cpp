@@ -1,0 +1,51 @@
+#include "apps/replay/bookmarks.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "apps/replay/request_params.h"
+#include "sim/io/output_file.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim::replay {
+
+using nlohmann::json;
+
+namespace {
+constexpr std::size_t kMaxBookmarks = 10000;
+}
+
+json load_bookmarks(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return json::array();
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > (16u << 20))
+    throw InputError(path + ": not a bookmarks file (not a regular file of at most 16 MB); left untouched");
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  const json doc = json::parse(text.str(), nullptr, false);
+  if (doc.is_discarded() || !doc.is_object() || doc.value("format", "") != "vascsim-bookmarks/1" ||
+      !doc.contains("bookmarks") || !doc["bookmarks"].is_array())
+    throw InputError(path + ": not a vascsim-bookmarks/1 file; left untouched");
+  return doc["bookmarks"];
+}
+
+json add_bookmark(const std::string& path, const json& b) {
+  if (!b.is_object()) throw ParamError("body", "expected a JSON object {\"name\", \"t\", \"view\"}");
+  if (!b.contains("name") || !b["name"].is_string() || b["name"].get<std::string>().empty() ||
+      b["name"].get<std::string>().size() > 200)
+    throw ParamError("name", "expected a string of 1..200 characters");
+  if (!b.contains("t") || !b["t"].is_number() || !std::isfinite(b["t"].get<double>()))
+    throw ParamError("t", "expected a finite time in seconds");
+  if (b.contains("view") && (!b["view"].is_string() || b["view"].get<std::string>().size() > 4096))
+    throw ParamError("view", "expected a string of at most 4096 characters");
+  json list = load_bookmarks(path);
+  if (list.size() >= kMaxBookmarks) throw ParamError("name", "this run already has 10000 bookmarks");
+  list.push_back({{"name", b["name"]}, {"t", b["t"]}, {"view", b.value("view", "")}});
+  write_file_atomically(path, json{{"format", "vascsim-bookmarks/1"}, {"bookmarks", list}}.dump(2) + "\n");
+  return list;
+}
+
+}  // namespace vascsim::replay

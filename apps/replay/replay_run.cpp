@@ -1,0 +1,200 @@
+#include "apps/replay/replay_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sim/scene/input_error.h"
+
+namespace vascsim::replay {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const char* layout_name(ChannelLayout l) {
+  switch (l) {
+    case ChannelLayout::kScalars: return "scalars";
+    case ChannelLayout::kNodeVectors: return "node_vectors";
+    case ChannelLayout::kVector: return "vector";
+  }
+  return "scalars";
+}
+
+// Finite numbers as numbers, the rest as null (JSON has no NaN).
+json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+json pair(double x, double y) { return json::array({number(x), number(y)}); }
+
+// The cached series of one run stay few: a page asks for a handful of channels.
+constexpr std::size_t kMaxCachedSeries = 12;
+
+}  // namespace
+
+ReplayRun::ReplayRun(std::string id, const std::string& run_path) : id_(std::move(id)), path_(run_path) {
+  source_ = std::make_unique<render::FrameSource>(run_path);
+  std::error_code ec;
+  log_is_file_ = !fs::is_directory(run_path, ec);
+  run_dir_ = log_is_file_ ? fs::path(source_->log_path()).parent_path().string() : run_path;
+  if (run_dir_.empty()) run_dir_ = ".";
+  refresh();
+}
+
+void ReplayRun::refresh() {
+  source_->refresh();
+  if (!summary_.is_null()) return;
+  // A summary belongs to the run directory's own log only.
+  const bool own_log = !log_is_file_ || fs::path(source_->log_path()).filename() == "frames.vlog";
+  const fs::path summary_path = fs::path(run_dir_) / "summary.json";
+  std::error_code ec;
+  if (!own_log) {
+    growing_ = false;
+    return;
+  }
+  if (!fs::is_regular_file(summary_path, ec)) {
+    growing_ = true;
+    return;
+  }
+  std::ifstream in(summary_path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  // The summary is written atomically (temporary name, then rename), so it is complete or absent.
+  summary_ = json::parse(text.str(), nullptr, false);
+  if (summary_.is_discarded()) summary_ = json{{"error", "summary.json is not valid JSON"}};
+  growing_ = false;
+  source_->refresh();
+}
+
+json ReplayRun::info() const {
+  const render::FrameSource& s = *source_;
+  const FrameLogHeader& h = s.header();
+  const LogMetadata& m = s.metadata();
+  json channels = json::array();
+  for (const LogChannel& c : h.channels)
+    channels.push_back({{"name", c.name}, {"unit", c.unit}, {"layout", layout_name(c.layout)}, {"count", c.count}});
+  json layers = json::array(), defaults = json::array();
+  for (const auto& name : render::all_layer_names()) {
+    layers.push_back(name);
+    if (render::LayerSet::defaults().has(*render::layer_from_name(name))) defaults.push_back(name);
+  }
+  return {{"run", id_},
+          {"path", path_},
+          {"title", m.title},
+          {"node_count", h.node_count},
+          {"channels", channels},
+          {"frames", s.frame_count()},
+          {"first_time", s.first_time()},
+          {"last_time", s.last_time()},
+          {"output_interval", m.output_interval},
+          {"growing", growing_},
+          {"summary", summary_},
+          {"bounds", {{"min", pair(m.bounds.min.x(), m.bounds.min.y())}, {"max", pair(m.bounds.max.x(), m.bounds.max.y())}}},
+          {"layers", layers},
+          {"default_layers", defaults}};
+}
+
+json ReplayRun::nodes(double t) const {
+  const render::FrameSource& s = *source_;
+  std::size_t i = s.frame_at_time(t);
+  if (i + 1 < s.frame_count() && std::abs(s.time_of(i + 1) - t) < std::abs(s.time_of(i) - t)) ++i;
+  // Read the whole record once; every channel is a slice of it.
+  std::vector<double> r;
+  s.record(i, r);
+  const FrameLogHeader& h = s.header();
+  const int position = h.find_channel(channel::kPosition), velocity = h.find_channel(channel::kVelocity);
+  json nodes = json::array();
+  for (std::size_t n = 0; n < h.node_count; ++n) {
+    const double* p = &r[h.channel_offset(position) + 2 * n];
+    json node = {{"index", n}, {"position", pair(p[0], p[1])}};
+    if (velocity >= 0) {
+      const double* v = &r[h.channel_offset(velocity) + 2 * n];
+      node["velocity"] = pair(v[0], v[1]);
+      node["speed"] = number(std::hypot(v[0], v[1]));
+    }
+    json forces = json::object();
+    for (std::size_t c = 0; c < h.channels.size(); ++c) {
+      const LogChannel& ch = h.channels[c];
+      if (ch.layout != ChannelLayout::kNodeVectors || ch.name.rfind("force/", 0) != 0) continue;
+      const double* f = &r[h.channel_offset(static_cast<int>(c)) + 2 * n];
+      forces[ch.name] = pair(f[0], f[1]);
+    }
+    node["forces"] = forces;
+    nodes.push_back(node);
+  }
+  return {{"run", id_}, {"time", r[0]}, {"frame", i}, {"nodes", nodes}};
+}
+
+template <class Visit>
+void ReplayRun::scan(std::size_t first, Visit visit) const {
+  const FrameLogHeader& h = source_->header();
+  const std::size_t per_record = h.record_doubles();
+  const std::size_t chunk = std::max<std::size_t>(1, (4u << 20) / (per_record * sizeof(double)));  // ~4 MB reads
+  FrameLogReader reader(source_->log_path());
+  std::vector<double> buffer;
+  for (std::size_t i = first; i < source_->frame_count(); i += chunk) {
+    const std::size_t n = std::min(chunk, source_->frame_count() - i);
+    reader.read_frames(i, n, buffer);
+    for (std::size_t k = 0; k < n; ++k) visit(i + k, &buffer[k * per_record]);
+  }
+}
+
+void ReplayRun::extend_track() {
+  if (times_.size() >= source_->frame_count()) return;
+  const FrameLogHeader& h = source_->header();
+  const std::size_t tip = h.channel_offset(h.find_channel(channel::kPosition)) + 2 * (h.node_count - 1);
+  times_.reserve(source_->frame_count());
+  tips_.reserve(source_->frame_count());
+  scan(times_.size(), [&](std::size_t, const double* r) {
+    times_.push_back(r[0]);
+    tips_.emplace_back(r[tip], r[tip + 1]);
+  });
+}
+
+const std::vector<double>& ReplayRun::times() {
+  extend_track();
+  return times_;
+}
+
+const std::vector<Vec2>& ReplayRun::tips() {
+  extend_track();
+  return tips_;
+}
+
+const std::vector<float>& ReplayRun::series(int channel, SeriesReduce reduce) {
+  const auto key = std::make_pair(channel, reduce);
+  auto it = series_.find(key);
+  if (it == series_.end()) {
+    if (series_.size() >= kMaxCachedSeries) series_.erase(series_.begin());
+    it = series_.emplace(key, std::vector<float>()).first;
+  }
+  std::vector<float>& values = it->second;
+  if (values.size() < source_->frame_count()) {
+    const FrameLogHeader& h = source_->header();
+    const LogChannel& c = h.channels[static_cast<std::size_t>(channel)];
+    const std::size_t offset = h.channel_offset(channel);
+    values.reserve(source_->frame_count());
+    scan(values.size(), [&](std::size_t, const double* r) {
+      values.push_back(static_cast<float>(reduce_values(r + offset, c, reduce)));
+    });
+  }
+  return values;
+}
+
+const render::ForcePeaks& ReplayRun::peaks() {
+  if (peaks_frames_ != source_->frame_count()) {
+    peaks_ = render::measure_force_peaks(*source_);
+    peaks_frames_ = source_->frame_count();
+  }
+  return peaks_;
+}
+
+std::string ReplayRun::bookmarks_path() const {
+  if (!log_is_file_) return (fs::path(run_dir_) / "bookmarks.json").string();
+  return fs::path(source_->log_path()).replace_extension(".bookmarks.json").string();
+}
+
+std::string ReplayRun::output_dir() const { return run_dir_; }
+
+}  // namespace vascsim::replay

@@ -1,0 +1,74 @@
+// One run opened for replay: its frame log, its summary, and the caches the server builds
+// lazily from streaming passes over the log (times and tips of every frame for the trail and
+// the timeline, reduced series for the plots, the arrow scales). Memory grows with the frame
+// count only by these per-frame numbers (about 30 bytes per frame, plus 4 per cached series),
+// never by whole records. The log may still be growing: refresh() picks up appended frames.
+// Not thread-safe: the server serialises access.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/replay/series.h"
+#include "render/frame_painter.h"
+#include "render/frame_source.h"
+
+namespace vascsim::replay {
+
+class ReplayRun {
+ public:
+  // `id` is "a" or "b"; `run_path` a run directory or a frame log file. Throws InputError.
+  ReplayRun(std::string id, const std::string& run_path);
+
+  const std::string& id() const { return id_; }
+  const std::string& path() const { return path_; }
+  render::FrameSource& source() { return *source_; }
+  const render::FrameSource& source() const { return *source_; }
+
+  // Picks up frames appended since and a summary.json that appeared.
+  void refresh();
+  // No summary.json yet: a `vascsim run` is still writing the log.
+  bool growing() const { return growing_; }
+  const nlohmann::json& summary() const { return summary_; }
+
+  // GET /api/run
+  nlohmann::json info() const;
+  // GET /api/nodes: the logged frame nearest to t.
+  nlohmann::json nodes(double t) const;
+
+  // Time and tip of every logged frame so far.
+  const std::vector<double>& times();
+  const std::vector<Vec2>& tips();
+  // One reduced value per logged frame so far (NaN-free unless the log holds NaN).
+  const std::vector<float>& series(int channel, SeriesReduce reduce);
+  // The whole log's typical forces, re-measured when the log has grown.
+  const render::ForcePeaks& peaks();
+
+  // Where bookmarks and exports go: the run directory (or the log file's directory).
+  std::string bookmarks_path() const;
+  std::string output_dir() const;
+
+ private:
+  void extend_track();
+  // Calls `visit(i, record)` for logged frames [first, frame_count), reading big chunks.
+  template <class Visit>
+  void scan(std::size_t first, Visit visit) const;
+
+  std::string id_, path_, run_dir_;
+  bool log_is_file_ = false;
+  std::unique_ptr<render::FrameSource> source_;
+  bool growing_ = false;
+  nlohmann::json summary_;
+  std::vector<double> times_;
+  std::vector<Vec2> tips_;
+  std::map<std::pair<int, SeriesReduce>, std::vector<float>> series_;
+  render::ForcePeaks peaks_;
+  std::size_t peaks_frames_ = 0;
+};
+
+}  // namespace vascsim::replay

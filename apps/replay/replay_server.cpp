@@ -1,0 +1,444 @@
+#include "apps/replay/replay_server.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <mutex>
+#include <random>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/replay/bookmarks.h"
+#include "apps/replay/export_jobs.h"
+#include "apps/replay/render_worker.h"
+#include "apps/replay/replay_assets.h"
+#include "apps/replay/replay_run.h"
+#include "apps/replay/request_params.h"
+#include "apps/replay/series.h"
+#include "render/png_writer.h"
+#include "render/view_frame.h"
+#include "sim/scene/input_error.h"
+
+// Last: it pulls in system headers whose macros break Eigen's templates when included first.
+#include <httplib.h>
+
+namespace vascsim::replay {
+
+using nlohmann::json;
+
+namespace {
+
+// 128 random bits as hex, from the OS's entropy source.
+std::string random_token() {
+  std::random_device rd;
+  std::string s;
+  const char* hex = "0123456789abcdef";
+  for (int i = 0; i < 32; ++i) s.push_back(hex[rd() % 16]);
+  return s;
+}
+
+// Compares in time independent of where the strings differ.
+bool same_secret(const std::string& a, const std::string& b) {
+  if (a.size() != b.size()) return false;
+  unsigned char diff = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) diff |= static_cast<unsigned char>(a[i] ^ b[i]);
+  return diff == 0;
+}
+
+void send_json(httplib::Response& res, const json& body, int status = 200) {
+  res.status = status;
+  res.set_header("Cache-Control", "no-store");
+  res.set_content(body.dump(-1, ' ', false, json::error_handler_t::replace), "application/json");
+}
+
+void send_error(httplib::Response& res, int status, const std::string& message, const std::string& parameter = "") {
+  json body = {{"error", message.substr(0, 2000)}};
+  if (!parameter.empty()) body["parameter"] = parameter;
+  send_json(res, body, status);
+}
+
+const char* content_type(const std::string& name) {
+  auto ends = [&](const char* ext) {
+    const std::string e(ext);
+    return name.size() >= e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0;
+  };
+  if (ends(".html")) return "text/html; charset=utf-8";
+  if (ends(".js")) return "text/javascript; charset=utf-8";
+  if (ends(".css")) return "text/css; charset=utf-8";
+  if (ends(".svg")) return "image/svg+xml";
+  if (ends(".png")) return "image/png";
+  return "application/octet-stream";
+}
+
+}  // namespace
+
+struct ReplayServer::Impl {
+  ReplayOptions options;
+  std::string token;
+  int port = 0;
+  std::vector<std::unique_ptr<ReplayRun>> runs;
+  std::mutex data_mutex;  // guards the runs: frame sources and their caches are not thread-safe
+  RenderWorker worker;
+  ExportJobs exports;
+  httplib::Server http;
+
+  std::string cookie_name() const { return "vascsim_token_" + std::to_string(port); }
+
+  bool authorised(const httplib::Request& req) const {
+    if (!options.require_token) return true;
+    if (req.has_param("token") && same_secret(req.get_param_value("token"), token)) return true;
+    const std::string cookies = req.get_header_value("Cookie");
+    const std::string key = cookie_name() + "=";
+    for (std::size_t at = cookies.find(key); at != std::string::npos; at = cookies.find(key, at + 1)) {
+      if (at > 0 && cookies[at - 1] != ' ' && cookies[at - 1] != ';') continue;
+      const std::size_t begin = at + key.size(), end = cookies.find(';', begin);
+      if (same_secret(cookies.substr(begin, end == std::string::npos ? std::string::npos : end - begin), token))
+        return true;
+    }
+    return false;
+  }
+
+  ReplayRun& run_of(const RequestParams& p) {
+    std::vector<std::string> ids;
+    for (const auto& r : runs) ids.push_back(r->id());
+    const std::string id = p.choice("run", "a", ids);
+    return *runs[id == "a" ? 0 : 1];
+  }
+
+  double time_of(const RequestParams& p, const ReplayRun& run) const {
+    return p.number("t", run.source().first_time(), -1e12, 1e12);
+  }
+
+  void frame(const httplib::Request& req, httplib::Response& res) {
+    const RequestParams p(req.params);
+    const render::View view = parse_view(p);
+    std::vector<std::uint8_t> rgba;
+    render::ViewFrameInfo info;
+    {
+      std::lock_guard<std::mutex> lock(data_mutex);
+      ReplayRun& run = run_of(p);
+      const double t = time_of(p, run);
+      ReplayRun* overlay = nullptr;
+      if (const auto o = p.text("overlay")) {
+        if (runs.size() < 2 || *o != "b" || run.id() != "a")
+          throw ParamError("overlay", "expected b (the second run, drawn over run a's map; needs two runs)");
+        overlay = runs[1].get();
+      }
+      run.refresh();
+      if (overlay) overlay->refresh();
+      render::ViewFrameInputs in;
+      in.source = &run.source();
+      in.peaks = run.peaks();
+      const std::vector<Vec2>* tips = &run.tips();
+      in.tip_of = [tips](std::size_t i) { return (*tips)[i]; };
+      in.overlay = overlay ? &overlay->source() : nullptr;
+      worker.run(view.width, view.height,
+                 [&](render::Canvas& canvas) { info = render::render_view_frame(canvas, in, view, t, rgba); });
+    }
+    const std::vector<std::uint8_t> png = render::encode_png(rgba.data(), view.width, view.height);
+    res.set_header("Cache-Control", "no-store");
+    res.set_header("X-Vascsim-View", json{{"time", info.time},
+                                          {"scale", info.transform.scale},
+                                          {"ox", info.transform.ox},
+                                          {"oy", info.transform.oy}}
+                                         .dump());
+    res.set_content(std::string(png.begin(), png.end()), "image/png");
+  }
+
+  void run_info(const httplib::Request& req, httplib::Response& res) {
+    const RequestParams p(req.params);
+    std::lock_guard<std::mutex> lock(data_mutex);
+    ReplayRun& run = run_of(p);
+    run.refresh();
+    json info = run.info();
+    info["runs"] = json::array();
+    for (const auto& r : runs) info["runs"].push_back(r->id());
+    send_json(res, info);
+  }
+
+  void nodes(const httplib::Request& req, httplib::Response& res) {
+    const RequestParams p(req.params);
+    std::lock_guard<std::mutex> lock(data_mutex);
+    ReplayRun& run = run_of(p);
+    run.refresh();
+    send_json(res, run.nodes(time_of(p, run)));
+  }
+
+  void series(const httplib::Request& req, httplib::Response& res) {
+    const RequestParams p(req.params);
+    std::lock_guard<std::mutex> lock(data_mutex);
+    ReplayRun& run = run_of(p);
+    run.refresh();
+    const auto name = p.text("channel");
+    if (!name) throw ParamError("channel", "required: a channel name from /api/run");
+    const FrameLogHeader& h = run.source().header();
+    const int channel = h.find_channel(*name);
+    if (channel < 0)
+      throw ParamError("channel", "no channel '" + name->substr(0, 64) + "' in this run (see /api/run)");
+    const LogChannel& c = h.channels[static_cast<std::size_t>(channel)];
+    SeriesReduce reduce;
+    try {
+      reduce = reduce_for(c, p.text("reduce").value_or("max"));
+    } catch (const std::invalid_argument& e) {
+      throw ParamError("reduce", e.what());
+    }
+    const double from = p.number("from", run.source().first_time(), -1e12, 1e12);
+    const double to = p.number("to", run.source().last_time(), -1e12, 1e12);
+    if (to < from) throw ParamError("to", "must not be before from");
+    const int points = static_cast<int>(p.integer("points", 1000, 1, 10000));
+    const DecimatedSeries d = decimate_min_max(run.times(), run.series(channel, reduce), from, to, points);
+    send_json(res, {{"run", run.id()},
+                    {"channel", c.name},
+                    {"unit", c.unit},
+                    {"reduce", reduce_name(reduce)},
+                    {"t", d.t},
+                    {"min", d.min},
+                    {"max", d.max}});
+  }
+
+  // First and last frame of each wall-contact episode, the goal and a failure.
+  void events(const httplib::Request& req, httplib::Response& res) {
+    const RequestParams p(req.params);
+    std::lock_guard<std::mutex> lock(data_mutex);
+    ReplayRun& run = run_of(p);
+    run.refresh();
+    json list = json::array();
+    constexpr std::size_t kMaxEvents = 2000;
+    const int contact = run.source().header().find_channel(channel::kContactForce);
+    bool truncated = false;
+    if (contact >= 0) {
+      const auto& times = run.times();
+      const auto& force = run.series(contact, SeriesReduce::kMax);
+      const std::size_t n = std::min(times.size(), force.size());
+      std::size_t episode = 0;
+      for (std::size_t i = 0; i < n && !truncated; ++i) {
+        const bool touching = force[i] > 0, was = i > 0 && force[i - 1] > 0;
+        if (touching && !was) {
+          ++episode;
+          list.push_back({{"t", times[i]}, {"kind", "contact_start"}, {"label", "contact " + std::to_string(episode) + " starts"}});
+        }
+        if (touching && (i + 1 == n || !(force[i + 1] > 0)))
+          list.push_back({{"t", times[i]}, {"kind", "contact_end"}, {"label", "contact " + std::to_string(episode) + " ends"}});
+        truncated = list.size() >= kMaxEvents;
+      }
+    }
+    const json& s = run.summary();
+    if (s.is_object() && s.contains("navigation") && s["navigation"].value("goal_reached", false) &&
+        s["navigation"]["goal_time"].is_number())
+      list.push_back({{"t", s["navigation"]["goal_time"]}, {"kind", "goal"}, {"label", "goal reached"}});
+    if (s.is_object() && s.contains("ok") && s["ok"] == false)
+      list.push_back({{"t", run.source().last_time()},
+                      {"kind", "failure"},
+                      {"label", "run failed: " + (s["failure"].is_string() ? s["failure"].get<std::string>() : "")}});
+    std::stable_sort(list.begin(), list.end(), [](const json& a, const json& b) { return a["t"] < b["t"]; });
+    send_json(res, {{"run", run.id()}, {"events", list}, {"truncated", truncated}});
+  }
+
+  void compare(const httplib::Request& req, httplib::Response& res) {
+    const RequestParams p(req.params);
+    std::lock_guard<std::mutex> lock(data_mutex);
+    if (runs.size() < 2) throw ParamError("run", "compare needs two runs (vascsim replay RUN_A RUN_B)");
+    const double t = time_of(p, *runs[0]);
+    json body = {{"time", t}};
+    Vec2 tip[2];
+    for (int k = 0; k < 2; ++k) {
+      runs[k]->refresh();
+      render::FrameState state;
+      runs[k]->source().at_time(t, state);
+      tip[k] = state.tip();
+      const std::string id = runs[k]->id();
+      body["tip_" + id] = {tip[k].x(), tip[k].y()};
+      body["clamped_" + id] = t < runs[k]->source().first_time() || t > runs[k]->source().last_time();
+    }
+    body["tip_distance"] = (tip[0] - tip[1]).norm();
+    send_json(res, body);
+  }
+
+  void bookmarks(const httplib::Request& req, httplib::Response& res, bool add) {
+    const RequestParams p(req.params);
+    std::lock_guard<std::mutex> lock(data_mutex);
+    ReplayRun& run = run_of(p);
+    json list;
+    if (add) {
+      const json body = json::parse(req.body, nullptr, false);
+      if (body.is_discarded()) throw ParamError("body", "expected JSON {\"name\", \"t\", \"view\"}");
+      list = add_bookmark(run.bookmarks_path(), body);
+    } else {
+      list = load_bookmarks(run.bookmarks_path());
+    }
+    send_json(res, {{"run", run.id()}, {"bookmarks", list}});
+  }
+
+  void start_export(const httplib::Request& req, httplib::Response& res) {
+    const RequestParams p(req.params);
+    render::RenderOptions o;
+    o.view = parse_view(p);
+    if (o.view.width % 2 || o.view.height % 2)
+      throw ParamError(o.view.width % 2 ? "width" : "height", "an MP4 (yuv420p) needs an even frame size");
+    o.fps = static_cast<int>(p.integer("fps", 30, 1, 240));
+    o.speed = p.number("speed", 1.0, 1e-3, 1e3);
+    o.from = p.optional_number("from", -1e12, 1e12);
+    o.to = p.optional_number("to", -1e12, 1e12);
+    if (o.from && o.to && *o.to < *o.from) throw ParamError("to", "must not be before from");
+    std::string path, out_dir;
+    {
+      std::lock_guard<std::mutex> lock(data_mutex);
+      ReplayRun& run = run_of(p);
+      path = run.source().log_path();
+      out_dir = run.output_dir();
+      const double t0 = std::max(o.from.value_or(run.source().first_time()), run.source().first_time());
+      const double t1 = std::min(o.to.value_or(run.source().last_time()), run.source().last_time());
+      if (std::floor((t1 - t0) * o.fps / o.speed) > 200000)
+        throw ParamError("to", "more than 200000 video frames; choose a shorter range or a higher speed");
+    }
+    try {
+      render::validate_render_options(o);
+    } catch (const InputError& e) {
+      throw ParamError("from", e.what());
+    }
+    send_json(res, {{"id", exports.start(path, out_dir, o)}});
+  }
+
+  void export_status(const httplib::Request& req, httplib::Response& res) {
+    const RequestParams p(req.params);
+    const auto s = exports.status(static_cast<int>(p.integer("id", 0, 1, 1 << 30)));
+    if (!s) throw ParamError("id", "no such export");
+    send_json(res, *s);
+  }
+
+  void export_file(const httplib::Request& req, httplib::Response& res) {
+    const RequestParams p(req.params);
+    const auto path = exports.file(static_cast<int>(p.integer("id", 0, 1, 1 << 30)));
+    if (!path) throw ParamError("id", "no finished export with this id");
+    auto in = std::make_shared<std::ifstream>(*path, std::ios::binary);
+    if (!*in) throw InputError(*path + ": cannot read the exported video");
+    in->seekg(0, std::ios::end);
+    const auto size = static_cast<std::size_t>(in->tellg());
+    in->seekg(0);
+    const std::string name = path->substr(path->find_last_of('/') + 1);
+    res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\"");
+    res.set_content_provider(size, "video/mp4", [in](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+      std::vector<char> buffer(std::min<std::size_t>(length, 1 << 16));
+      in->seekg(static_cast<std::streamoff>(offset));
+      in->read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+      const auto got = in->gcount();
+      if (got <= 0) return false;
+      return sink.write(buffer.data(), static_cast<std::size_t>(got));
+    });
+  }
+
+  void asset(const std::string& name, const httplib::Request& req, httplib::Response& res) {
+    for (const auto& a : embedded_assets()) {
+      if (a.name != name) continue;
+      std::string body(reinterpret_cast<const char*>(a.data), a.size);
+      if (name == "index.html") {
+        const std::string marker = "{{TOKEN}}";
+        for (std::size_t at = body.find(marker); at != std::string::npos; at = body.find(marker, at))
+          body.replace(at, marker.size(), options.require_token ? token : "");
+        if (options.require_token && req.has_param("token"))
+          res.set_header("Set-Cookie", cookie_name() + "=" + token + "; Path=/; HttpOnly; SameSite=Strict");
+      }
+      res.set_header("Cache-Control", "no-store");
+      res.set_content(body, content_type(name));
+      return;
+    }
+    send_error(res, 404, "no such file");
+  }
+
+  using Handler = void (Impl::*)(const httplib::Request&, httplib::Response&);
+  httplib::Server::Handler wrap(Handler handler) {
+    return [this, handler](const httplib::Request& req, httplib::Response& res) { guarded(req, res, [&] { (this->*handler)(req, res); }); };
+  }
+  template <class Body>
+  void guarded(const httplib::Request&, httplib::Response& res, Body body) {
+    try {
+      body();
+    } catch (const ParamError& e) {
+      send_error(res, 400, e.what(), e.parameter());
+    } catch (const InputError& e) {
+      send_error(res, 500, e.what());
+    } catch (const std::exception& e) {
+      send_error(res, 500, std::string("internal error: ") + e.what());
+    }
+  }
+
+  void routes() {
+    http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+      // Nothing the page loads comes from elsewhere, and the token in the URL must not leak.
+      res.set_header("X-Content-Type-Options", "nosniff");
+      res.set_header("Referrer-Policy", "no-referrer");
+      res.set_header("Content-Security-Policy",
+                     "default-src 'self'; img-src 'self' blob: data:; style-src 'self' 'unsafe-inline'; "
+                     "connect-src 'self'; media-src 'self' blob:; frame-ancestors 'none'");
+      if (authorised(req)) return httplib::Server::HandlerResponse::Unhandled;
+      send_error(res, 403, "missing or wrong token: open the URL that vascsim replay printed", "token");
+      return httplib::Server::HandlerResponse::Handled;
+    });
+    http.Get("/", [this](const httplib::Request& req, httplib::Response& res) { asset("index.html", req, res); });
+    for (const auto& a : embedded_assets()) {
+      if (a.name == "index.html") continue;
+      const std::string name = a.name;
+      http.Get("/" + name, [this, name](const httplib::Request& req, httplib::Response& res) { asset(name, req, res); });
+    }
+    http.Get("/api/run", wrap(&Impl::run_info));
+    http.Get("/api/frame.png", wrap(&Impl::frame));
+    http.Get("/api/nodes", wrap(&Impl::nodes));
+    http.Get("/api/series", wrap(&Impl::series));
+    http.Get("/api/events", wrap(&Impl::events));
+    http.Get("/api/compare", wrap(&Impl::compare));
+    http.Get("/api/bookmarks", [this](const httplib::Request& req, httplib::Response& res) {
+      guarded(req, res, [&] { bookmarks(req, res, false); });
+    });
+    http.Post("/api/bookmarks", [this](const httplib::Request& req, httplib::Response& res) {
+      guarded(req, res, [&] { bookmarks(req, res, true); });
+    });
+    http.Post("/api/export", wrap(&Impl::start_export));
+    http.Get("/api/export/status", wrap(&Impl::export_status));
+    http.Get("/api/export/file", wrap(&Impl::export_file));
+    http.set_error_handler([](const httplib::Request&, httplib::Response& res) {
+      if (res.body.empty()) send_error(res, res.status, res.status == 404 ? "no such endpoint" : "bad request");
+    });
+    http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
+      send_error(res, 500, "internal error");
+    });
+    http.set_payload_max_length(1 << 20);  // bookmark bodies are small
+    http.set_read_timeout(10);
+    http.set_keep_alive_max_count(1000);
+  }
+};
+
+ReplayServer::ReplayServer(const ReplayOptions& options) : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  s.options = options;
+  if (options.runs.empty() || options.runs.size() > 2) throw InputError("expected one or two runs to replay");
+  const char* ids[] = {"a", "b"};
+  for (std::size_t i = 0; i < options.runs.size(); ++i) s.runs.push_back(std::make_unique<ReplayRun>(ids[i], options.runs[i]));
+  s.token = options.require_token ? random_token() : "";
+  s.routes();
+  if (options.port == 0) {
+    s.port = s.http.bind_to_any_port(options.host);
+    if (s.port <= 0) throw InputError("cannot listen on " + options.host + " (no free port, or not an address of this machine)");
+  } else {
+    if (!s.http.bind_to_port(options.host, options.port))
+      throw InputError("cannot listen on " + options.host + ":" + std::to_string(options.port) +
+                       " (in use, or not an address of this machine)");
+    s.port = options.port;
+  }
+}
+
+ReplayServer::~ReplayServer() { stop(); }
+
+int ReplayServer::port() const { return impl_->port; }
+const std::string& ReplayServer::token() const { return impl_->token; }
+
+std::string ReplayServer::url() const {
+  const std::string& h = impl_->options.host;
+  const std::string host = h == "0.0.0.0" || h.empty() ? "127.0.0.1" : h.find(':') != std::string::npos ? "[" + h + "]" : h;
+  return "http://" + host + ":" + std::to_string(impl_->port) + "/" +
+         (impl_->options.require_token ? "?token=" + impl_->token : "");
+}
+
+void ReplayServer::serve() { impl_->http.listen_after_bind(); }
+void ReplayServer::stop() { impl_->http.stop(); }
+
+}  // namespace vascsim::replay

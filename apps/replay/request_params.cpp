@@ -1,0 +1,93 @@
+#include "apps/replay/request_params.h"
+
+#include <cmath>
+#include <cstdlib>
+
+#include "sim/scene/input_error.h"
+
+namespace vascsim::replay {
+
+namespace {
+
+// A parameter value quoted in an error message, cut short: the message must not echo a huge or
+// hostile input back.
+std::string quoted(const std::string& value) {
+  return "'" + (value.size() > 40 ? value.substr(0, 40) + "..." : value) + "'";
+}
+
+}  // namespace
+
+std::optional<std::string> RequestParams::text(const std::string& name) const {
+  const auto it = query_.find(name);
+  if (it == query_.end()) return std::nullopt;
+  if (it->second.size() > 4096) throw ParamError(name, "longer than 4096 characters");
+  return it->second;
+}
+
+std::optional<double> RequestParams::optional_number(const std::string& name, double min, double max) const {
+  const auto value = text(name);
+  if (!value) return std::nullopt;
+  char* end = nullptr;
+  const double x = value->empty() || value->size() > 64 ? NAN : std::strtod(value->c_str(), &end);
+  if (!std::isfinite(x) || end != value->c_str() + value->size())
+    throw ParamError(name, "expected a finite number, got " + quoted(*value));
+  if (x < min || x > max)
+    throw ParamError(name, "expected a number in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
+                               quoted(*value));
+  return x;
+}
+
+double RequestParams::number(const std::string& name, double fallback, double min, double max) const {
+  return optional_number(name, min, max).value_or(fallback);
+}
+
+long long RequestParams::integer(const std::string& name, long long fallback, long long min, long long max) const {
+  const auto value = text(name);
+  if (!value) return fallback;
+  char* end = nullptr;
+  const long long x = value->empty() || value->size() > 20 ? 0 : std::strtoll(value->c_str(), &end, 10);
+  if (value->empty() || value->size() > 20 || end != value->c_str() + value->size())
+    throw ParamError(name, "expected an integer, got " + quoted(*value));
+  if (x < min || x > max)
+    throw ParamError(name, "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
+                               quoted(*value));
+  return x;
+}
+
+std::string RequestParams::choice(const std::string& name, const std::string& fallback,
+                                  const std::vector<std::string>& choices) const {
+  const auto value = text(name);
+  if (!value) return fallback;
+  for (const auto& c : choices)
+    if (*value == c) return c;
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+  throw ParamError(name, "expected one of " + list + ", got " + quoted(*value));
+}
+
+render::View parse_view(const RequestParams& p) {
+  render::View v;
+  v.width = static_cast<int>(p.integer("width", v.width, 16, kMaxFrameSide));
+  v.height = static_cast<int>(p.integer("height", v.height, 16, kMaxFrameSide));
+  v.zoom = p.number("zoom", 1.0, 1e-3, 1e3);
+  try {
+    if (const auto centre = p.text("center")) {
+      v.centre = render::parse_centre(*centre);
+      v.camera = render::CameraMode::kCentre;
+    }
+  } catch (const InputError& e) {
+    throw ParamError("center", e.what());
+  }
+  const std::string camera = p.choice("camera", render::camera_name(v.camera), {"fit", "follow", "center"});
+  v.camera = render::parse_camera(camera);
+  if (v.camera == render::CameraMode::kCentre && !p.text("center"))
+    throw ParamError("center", "camera=center needs center=X,Y (metres)");
+  try {
+    if (const auto layers = p.text("layers")) v.layers = render::parse_layer_list(*layers);
+  } catch (const InputError& e) {
+    throw ParamError("layers", e.what());
+  }
+  return v;
+}
+
+}  // namespace vascsim::replay
