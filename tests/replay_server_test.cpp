@@ -1,0 +1,329 @@
+// The replay server, in-process on a free port: its frames are the renderer's pixels (byte for
+// byte what `vascsim render --still` writes), it refuses requests without the token, answers
+// each bad parameter with 400 naming it, follows a log that is still being written, aligns two
+// runs by simulated time, and reads node values from the log.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "render/frame_source.h"
+#include "tests/render_test_util.h"
+#include "render/synthetic_log.h"
+#include "sim/io/log_metadata.h"
+#include "sim/log/frame_log.h"
+#include "tests/cli_test_support.h"
+#include "tests/replay_test_support.h"
+
+namespace vascsim::replay {
+namespace {
+
+using nlohmann::json;
+using render::testing::ScratchDir;
+using testing::LiveServer;
+namespace fs = std::filesystem;
+
+std::string synthetic_run(const ScratchDir& dir, const std::string& name, render::SyntheticLogSpec spec = {}) {
+  const std::string run = dir / name;
+  fs::create_directories(run);
+  render::write_synthetic_log(run + "/frames.vlog", spec);
+  return run;
+}
+
+render::SyntheticLogSpec long_spec() {
+  render::SyntheticLogSpec spec;
+  spec.frames = 101;
+  spec.duration = 10.0;
+  spec.speed = 0.004;
+  return spec;
+}
+
+json get_json(LiveServer& s, const std::string& query, int expected_status = 200) {
+  const auto r = s.get(query);
+  EXPECT_TRUE(r) << query << ": no answer";
+  if (!r) return json();
+  EXPECT_EQ(r->status, expected_status) << query << ": " << r->body;
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/json") << query;
+  return json::parse(r->body, nullptr, false);
+}
+
+TEST(ReplayServer, FrameIsByteIdenticalToRenderStill) {
+  ScratchDir dir("replay_still");
+  const std::string run = synthetic_run(dir, "run", long_spec());
+  LiveServer s({{run}});
+  struct Case {
+    std::string query, options;
+  } cases[] = {
+      {"t=3.33&width=640&height=360", "--still 3.33 --width 640 --height 360"},
+      {"t=7.5&width=480&height=480&camera=follow&zoom=3", "--still 7.5 --width 480 --height 480 --camera follow --zoom 3"},
+      {"t=5&width=400&height=300&center=0.02,0.03&zoom=2&layers=walls,rod,nodes,contact",
+       "--still 5 --width 400 --height 300 --center 0.02,0.03 --zoom 2 --layers walls,rod,nodes,contact"},
+      // A seek backwards after a later frame: the trail is rebuilt, not carried over.
+      {"t=1.25&width=320&height=240", "--still 1.25 --width 320 --height 240"},
+  };
+  for (const auto& c : cases) {
+    const auto r = s.get("/api/frame.png?" + c.query);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    EXPECT_EQ(r->get_header_value("Content-Type"), "image/png");
+    const std::string png = dir / "still.png";
+    const auto cli = vascsim::test::run_vascsim("render " + run + " " + c.options + " --png " + png + " --force");
+    ASSERT_EQ(cli.exit_code, 0) << cli.output;
+    EXPECT_TRUE(r->body == vascsim::test::read_text(png)) << c.query << ": server frame differs from render --still";
+    // The view transform puts the tip where the renderer drew it.
+    const json view = json::parse(r->get_header_value("X-Vascsim-View"));
+    EXPECT_GT(view["scale"].get<double>(), 0);
+  }
+}
+
+TEST(ReplayServer, LayersChangeThePixels) {
+  ScratchDir dir("replay_layers");
+  LiveServer s({{synthetic_run(dir, "run", long_spec())}});
+  const auto all = s.get("/api/frame.png?t=5&width=320&height=240");
+  const auto no_trail = s.get("/api/frame.png?t=5&width=320&height=240&layers=lumen,walls,path,start_goal,rod,magnetic,contact,hud,legend");
+  ASSERT_TRUE(all && no_trail);
+  EXPECT_NE(all->body, no_trail->body) << "hiding the trail changed nothing";
+}
+
+TEST(ReplayServer, RequestsWithoutTheTokenAreForbidden) {
+  ScratchDir dir("replay_token");
+  LiveServer s({{synthetic_run(dir, "run")}});
+  for (const std::string path : {"/", "/api/run", "/api/frame.png", "/replay.js", "/api/nodes?t=0"}) {
+    const auto r = s.get(path, false);
+    ASSERT_TRUE(r) << path;
+    EXPECT_EQ(r->status, 403) << path;
+    const auto wrong = s.get(path + std::string(path.find('?') == std::string::npos ? "?" : "&") + "token=0123", false);
+    ASSERT_TRUE(wrong);
+    EXPECT_EQ(wrong->status, 403) << path << " with a wrong token";
+  }
+  EXPECT_EQ(s.get("/api/run")->status, 200);
+  // The page opened with the token sets a cookie that authorises the requests it makes.
+  const auto page = s.get("/");
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->status, 200);
+  const std::string cookie = page->get_header_value("Set-Cookie");
+  ASSERT_NE(cookie.find("HttpOnly"), std::string::npos) << cookie;
+  const auto with_cookie = s.client().Get("/api/run", {{"Cookie", cookie.substr(0, cookie.find(';'))}});
+  ASSERT_TRUE(with_cookie);
+  EXPECT_EQ(with_cookie->status, 200);
+  // Nothing outside the run and the page: no path reaches the file system.
+  EXPECT_EQ(s.get("/../../etc/passwd")->status, 404);
+  EXPECT_EQ(s.get("/frames.vlog")->status, 404);
+}
+
+TEST(ReplayServer, NoTokenModeServesWithoutOne) {
+  ScratchDir dir("replay_notoken");
+  ReplayOptions o{{synthetic_run(dir, "run")}};
+  o.require_token = false;
+  LiveServer s(o);
+  EXPECT_EQ(s.get("/api/run", false)->status, 200);
+  EXPECT_EQ(s.server().url().find("token"), std::string::npos);
+}
+
+TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
+  ScratchDir dir("replay_400");
+  LiveServer s({{synthetic_run(dir, "run")}});
+  const std::pair<std::string, std::string> cases[] = {
+      {"/api/frame.png?t=nan", "t"},
+      {"/api/frame.png?t=inf", "t"},
+      {"/api/frame.png?t=1e400", "t"},
+      {"/api/frame.png?t=", "t"},
+      {"/api/frame.png?width=5000", "width"},
+      {"/api/frame.png?height=0", "height"},
+      {"/api/frame.png?width=12.5", "width"},
+      {"/api/frame.png?zoom=0", "zoom"},
+      {"/api/frame.png?zoom=-1", "zoom"},
+      {"/api/frame.png?camera=orbit", "camera"},
+      {"/api/frame.png?camera=center", "center"},
+      {"/api/frame.png?center=1", "center"},
+      {"/api/frame.png?center=1,nan", "center"},
+      {"/api/frame.png?layers=walls,bogus", "layers"},
+      {"/api/frame.png?run=b", "run"},
+      {"/api/frame.png?run=../../etc", "run"},
+      {"/api/frame.png?overlay=b", "overlay"},
+      {"/api/nodes?t=x", "t"},
+      {"/api/series", "channel"},
+      {"/api/series?channel=nope", "channel"},
+      {"/api/series?channel=force/contact&reduce=median", "reduce"},
+      {"/api/series?channel=tip/error&points=0", "points"},
+      {"/api/series?channel=tip/error&from=2&to=1", "to"},
+      {"/api/compare?t=1", "run"},
+      {"/api/export/status?id=99", "id"},
+      {"/api/export/status?id=abc", "id"},
+      {"/api/export/file?id=1", "id"},
+  };
+  for (const auto& [query, parameter] : cases) {
+    const json body = get_json(s, query, 400);
+    EXPECT_EQ(body.value("parameter", ""), parameter) << query << ": " << body.dump();
+    EXPECT_NE(body.value("error", "").find(parameter), std::string::npos) << query << ": " << body.dump();
+  }
+  const auto odd = s.client().Post(s.authorised("/api/export?width=321&height=240").c_str(), "", "text/plain");
+  ASSERT_TRUE(odd);
+  EXPECT_EQ(odd->status, 400);
+  EXPECT_EQ(json::parse(odd->body)["parameter"], "width");
+  const auto bad_bookmark = s.post("/api/bookmarks", "{\"name\": \"\", \"t\": 1}");
+  ASSERT_TRUE(bad_bookmark);
+  EXPECT_EQ(bad_bookmark->status, 400);
+  EXPECT_EQ(json::parse(bad_bookmark->body)["parameter"], "name");
+}
+
+TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
+  ScratchDir dir("replay_nodes");
+  const std::string run = synthetic_run(dir, "run", long_spec());
+  LiveServer s({{run}});
+  const json info = get_json(s, "/api/run");
+  EXPECT_EQ(info["frames"], 101);
+  EXPECT_DOUBLE_EQ(info["last_time"].get<double>(), 10.0);
+  EXPECT_EQ(info["node_count"], 40);
+  EXPECT_EQ(info["growing"], true) << "a run directory without summary.json is a run still being written";
+
+  render::FrameSource source(run);
+  render::FrameState frame;
+  source.frame(42, frame);
+  // t between frames 42 and 43, nearer 42.
+  const json nodes = get_json(s, "/api/nodes?t=" + std::to_string(frame.time + 0.03));
+  EXPECT_EQ(nodes["frame"], 42);
+  ASSERT_EQ(nodes["nodes"].size(), 40u);
+  for (const int i : {0, 10, 39}) {
+    EXPECT_DOUBLE_EQ(nodes["nodes"][i]["position"][0].get<double>(), frame.position[2 * i]);
+    EXPECT_DOUBLE_EQ(nodes["nodes"][i]["position"][1].get<double>(), frame.position[2 * i + 1]);
+    EXPECT_DOUBLE_EQ(nodes["nodes"][i]["forces"]["force/contact"][0].get<double>(), frame.contact[2 * i]);
+  }
+  // Series: min/max over every frame equal the brute-force extremes over the log.
+  const json series = get_json(s, "/api/series?channel=force/contact&reduce=max&points=7");
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t i = 0; i < source.frame_count(); ++i) {
+    source.frame(i, frame);
+    lo = std::min(lo, frame.max_contact()), hi = std::max(hi, frame.max_contact());
+  }
+  double got_lo = 1e300, got_hi = -1e300;
+  for (std::size_t k = 0; k < series["t"].size(); ++k) {
+    got_lo = std::min(got_lo, series["min"][k].get<double>());
+    got_hi = std::max(got_hi, series["max"][k].get<double>());
+  }
+  EXPECT_LE(series["t"].size(), 7u);
+  EXPECT_NEAR(got_lo, lo, 1e-9 * (1 + std::abs(lo)));  // stored as float
+  EXPECT_NEAR(got_hi, hi, 1e-6 * hi);
+  EXPECT_EQ(series["unit"], "N");
+}
+
+// A log that a run is still writing: the server sees appended frames, then the summary.
+TEST(ReplayServer, LiveFollowSeesFramesAppendedAfterStart) {
+  ScratchDir dir("replay_live");
+  const std::string run = dir / "run";
+  fs::create_directories(run);
+  render::SyntheticLogSpec spec;
+  FrameLogHeader header;
+  header.node_count = 3;
+  header.channels = {{channel::kPosition, "m", ChannelLayout::kNodeVectors, 6}};
+  header.metadata = write_log_metadata(render::synthetic_metadata(spec));
+  FrameLogWriter writer(run + "/frames.vlog", header);
+  auto append = [&](int k) { writer.append(0.1 * k, {0.0, 0.0, 0.001 * k, 0.0, 0.002 * k, 0.001}); };
+  for (int k = 0; k < 5; ++k) append(k);
+  LiveServer s({{run}});
+  json info = get_json(s, "/api/run");
+  EXPECT_EQ(info["frames"], 5);
+  EXPECT_EQ(info["growing"], true);
+  EXPECT_TRUE(info["summary"].is_null());
+  EXPECT_EQ(s.get("/api/frame.png?t=0.4&width=64&height=64")->status, 200);
+  for (int k = 5; k < 12; ++k) append(k);
+  info = get_json(s, "/api/run");
+  EXPECT_EQ(info["frames"], 12);
+  EXPECT_NEAR(info["last_time"].get<double>(), 1.1, 1e-12);
+  // The trail cache grows with the log: a frame at the new end renders like a still of it.
+  const auto live = s.get("/api/frame.png?t=1.1&width=64&height=64");
+  ASSERT_EQ(live->status, 200);
+  const json nodes = get_json(s, "/api/nodes?t=1.1");
+  EXPECT_EQ(nodes["frame"], 11);
+  writer.close();
+  vascsim::test::write_text(run + "/summary.json", "{\"format\": \"vascsim-summary/1\", \"ok\": true}");
+  info = get_json(s, "/api/run");
+  EXPECT_EQ(info["growing"], false);
+  EXPECT_EQ(info["summary"]["ok"], true);
+  const std::string png = dir / "live.png";
+  ASSERT_EQ(vascsim::test::run_vascsim("render " + run + " --still 1.1 --width 64 --height 64 --png " + png).exit_code, 0);
+  EXPECT_TRUE(live->body == vascsim::test::read_text(png)) << "a live frame differs from the still of the final log";
+}
+
+TEST(ReplayServer, CompareAlignsRunsBySimulatedTime) {
+  ScratchDir dir("replay_compare");
+  render::SyntheticLogSpec a = long_spec(), b = long_spec();
+  b.frames = 31;  // a different length and output interval
+  b.duration = 6.0;
+  b.speed = 0.006;
+  const std::string run_a = synthetic_run(dir, "a", a), run_b = synthetic_run(dir, "b", b);
+  LiveServer s({{run_a, run_b}});
+  EXPECT_EQ(get_json(s, "/api/run?run=b")["frames"], 31);
+  render::FrameSource sa(run_a), sb(run_b);
+  for (const double t : {0.0, 2.55, 5.9, 8.0}) {
+    render::FrameState fa, fb;
+    sa.at_time(t, fa);
+    sb.at_time(t, fb);
+    const json c = get_json(s, "/api/compare?t=" + std::to_string(t));
+    EXPECT_NEAR(c["tip_distance"].get<double>(), (fa.tip() - fb.tip()).norm(), 1e-12) << "t = " << t;
+    EXPECT_EQ(c["clamped_b"], t > 6.0);
+  }
+  // Overlay: run b's rod drawn over run a's map changes the picture.
+  EXPECT_NE(s.get("/api/frame.png?t=3&width=320&height=240&overlay=b")->body,
+            s.get("/api/frame.png?t=3&width=320&height=240")->body);
+  const std::string png = dir / "overlay.png";
+  ASSERT_EQ(vascsim::test::run_vascsim("render " + run_a + " --still 3 --width 320 --height 240 --overlay " + run_b +
+                                       " --png " + png)
+                .exit_code,
+            0);
+  EXPECT_TRUE(s.get("/api/frame.png?t=3&width=320&height=240&overlay=b")->body == vascsim::test::read_text(png));
+}
+
+TEST(ReplayServer, BookmarksAreSavedAndAForeignFileIsLeftAlone) {
+  ScratchDir dir("replay_bookmarks");
+  const std::string run = synthetic_run(dir, "run");
+  LiveServer s({{run}});
+  EXPECT_EQ(get_json(s, "/api/bookmarks")["bookmarks"].size(), 0u);
+  const auto added = s.post("/api/bookmarks", R"({"name": "corner", "t": 0.5, "view": "t=0.5&zoom=2"})");
+  ASSERT_TRUE(added);
+  ASSERT_EQ(added->status, 200) << added->body;
+  const json saved = json::parse(vascsim::test::read_text(run + "/bookmarks.json"));
+  EXPECT_EQ(saved["format"], "vascsim-bookmarks/1");
+  EXPECT_EQ(saved["bookmarks"][0]["name"], "corner");
+  EXPECT_EQ(get_json(s, "/api/bookmarks")["bookmarks"][0]["view"], "t=0.5&zoom=2");
+  vascsim::test::write_text(run + "/bookmarks.json", "my notes, not JSON");
+  const auto refused = s.post("/api/bookmarks", R"({"name": "x", "t": 1})");
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->status, 500);
+  EXPECT_EQ(vascsim::test::read_text(run + "/bookmarks.json"), "my notes, not JSON");
+}
+
+TEST(ReplayServer, ExportWritesANewMp4EachTime) {
+  ScratchDir dir("replay_export");
+  const std::string run = synthetic_run(dir, "run", long_spec());
+  LiveServer s({{run}});
+  std::vector<std::string> files;
+  for (int k = 0; k < 2; ++k) {
+    const auto r = s.client().Post(s.authorised("/api/export?from=1&to=2&width=160&height=120&fps=10").c_str(), "",
+                                   "text/plain");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    const int id = json::parse(r->body)["id"];
+    json status;
+    for (int wait = 0; wait < 600; ++wait) {
+      status = get_json(s, "/api/export/status?id=" + std::to_string(id));
+      if (status["state"] != "running") break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    ASSERT_EQ(status["state"], "done") << status.dump();
+    EXPECT_EQ(status["frames_done"], 11);
+    files.push_back(status["file"]);
+    const auto file = s.get("/api/export/file?id=" + std::to_string(id));
+    ASSERT_TRUE(file);
+    EXPECT_EQ(file->status, 200);
+    EXPECT_TRUE(file->body == vascsim::test::read_text(run + "/" + files.back()));
+  }
+  EXPECT_EQ(files[0], "export-001.mp4");
+  EXPECT_EQ(files[1], "export-002.mp4");
+}
+
+}  // namespace
+}  // namespace vascsim::replay
