@@ -13,6 +13,7 @@
 #include "render/frame_source.h"
 #include "tests/render_test_util.h"
 #include "render/synthetic_log.h"
+#include "render/video_encoder.h"
 #include "sim/io/log_metadata.h"
 #include "sim/log/frame_log.h"
 #include "tests/cli_test_support.h"
@@ -320,6 +321,10 @@ TEST(ReplayServer, ExportWritesANewMp4EachTime) {
     ASSERT_TRUE(file);
     EXPECT_EQ(file->status, 200);
     EXPECT_TRUE(file->body == vascsim::test::read_text(run + "/" + files.back()));
+    const render::VideoInfo video = render::probe_video(run + "/" + files.back());
+    EXPECT_EQ(video.codec, "h264");
+    EXPECT_EQ(video.frames, 11);
+    EXPECT_EQ(video.width, 160);
   }
   EXPECT_EQ(files[0], "export-001.mp4");
   EXPECT_EQ(files[1], "export-002.mp4");

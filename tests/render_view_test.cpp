@@ -1,0 +1,116 @@
+// The view as a value: layer names parse and print back, every layer changes the picture when
+// it has something to draw, a still at time T is byte-identical to the video frame at T (the
+// trail rebuilt from the first frame), and `vascsim render` rejects bad view options with exit 2
+// naming the option.
+#include <gtest/gtest.h>
+
+#include "render/canvas.h"
+#include "render/frame_painter.h"
+#include "render/frame_source.h"
+#include "render/view.h"
+#include "render/view_frame.h"
+#include "render_test_util.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim::render {
+namespace {
+
+using testing::ScratchDir;
+
+TEST(RenderView, LayerListsParseAndPrintBack) {
+  EXPECT_EQ(format_layer_list(LayerSet::defaults()), "lumen,walls,path,start_goal,trail,rod,magnetic,contact,hud,legend");
+  EXPECT_EQ(parse_layer_list(format_layer_list(LayerSet::defaults())), LayerSet::defaults());
+  EXPECT_EQ(parse_layer_list(""), LayerSet::none());
+  const LayerSet some = parse_layer_list("rod,walls,nodes");
+  EXPECT_TRUE(some.has(Layer::kRod) && some.has(Layer::kWalls) && some.has(Layer::kNodes));
+  EXPECT_FALSE(some.has(Layer::kTrail));
+  EXPECT_EQ(format_layer_list(hide_layers(LayerSet::defaults(), "trail,hud")),
+            "lumen,walls,path,start_goal,rod,magnetic,contact,legend");
+  try {
+    parse_layer_list("rod,bogus");
+    FAIL() << "an unknown layer was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bogus"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("friction"), std::string::npos) << "the message lists the known layers";
+  }
+  EXPECT_THROW(parse_centre("1,"), InputError);
+  EXPECT_THROW(parse_centre("1,2,3"), InputError);
+  EXPECT_THROW(parse_centre("nan,1"), InputError);
+  EXPECT_EQ(parse_centre("0.25,-1e-3"), Vec2(0.25, -1e-3));
+}
+
+// Each layer, turned off alone, changes the picture of a frame that has something for it.
+TEST(RenderView, EveryLayerDrawsSomething) {
+  ScratchDir dir("view_layers");
+  SyntheticLogSpec spec;
+  spec.frames = 30;
+  spec.duration = 3;
+  spec.speed = 0.005;
+  const std::string run = testing::make_run(dir, spec);
+  FrameSource source(run);
+  ViewFrameInputs in;
+  in.source = &source;
+  in.peaks = measure_force_peaks(source);
+  View all;
+  all.width = 320;
+  all.height = 240;
+  for (int i = 0; i < static_cast<int>(Layer::kCount); ++i) all.layers.set(static_cast<Layer>(i), true);
+  Canvas canvas(all.width, all.height);
+  std::vector<std::uint8_t> reference, without;
+  render_view_frame(canvas, in, all, 2.0, reference);
+  for (int i = 0; i < static_cast<int>(Layer::kCount); ++i) {
+    const Layer layer = static_cast<Layer>(i);
+    if (layer == Layer::kFriction || layer == Layer::kDrag) continue;  // the synthetic log has neither channel
+    View v = all;
+    v.layers.set(layer, false);
+    render_view_frame(canvas, in, v, 2.0, without);
+    EXPECT_NE(without, reference) << "turning off '" << layer_name(layer) << "' changed nothing";
+  }
+}
+
+TEST(RenderView, StillAtTIsTheVideoFrameAtT) {
+  ScratchDir dir("view_still");
+  SyntheticLogSpec spec;
+  spec.frames = 21;
+  spec.duration = 2;
+  spec.speed = 0.006;
+  const std::string run = testing::make_run(dir, spec);
+  // fps 10: frame k shows t = 0.5 + 0.1 k; frame 7 is t = 1.2, between logged frames.
+  auto r = testing::run_vascsim("render " + run + " --png-dir " + (dir / "seq") +
+                                    " --from 0.5 --to 1.5 --fps 10 --width 320 --height 240 --hide hud",
+                                dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = testing::run_vascsim("render " + run + " --still 1.2 --png " + (dir / "still.png") +
+                               " --width 320 --height 240 --hide hud",
+                           dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(testing::read_bytes(dir / "still.png") == testing::read_bytes(dir / "seq/frame_000007.png"))
+      << "the still at 1.2 s differs from the clip's frame at 1.2 s";
+  // A still never overwrites without --force.
+  r = testing::run_vascsim("render " + run + " --still 1.0 --png " + (dir / "still.png"), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("exists"), std::string::npos) << r.err;
+}
+
+TEST(RenderView, BadViewOptionsExit2NamingTheOption) {
+  ScratchDir dir("view_cli");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  const std::pair<std::string, std::string> cases[] = {
+      {"--still 0.5 --png X --layers rod,bogus", "bogus"},
+      {"--still 0.5 --png X --hide nope", "nope"},
+      {"--still 0.5 --png X --camera center", "--center"},
+      {"--still 0.5 --png X --center 1", "center"},
+      {"--still 0.5 --png X --camera orbit", "camera"},
+      {"--still 0.5", "--png"},
+      {"--png X", "--still"},
+      {"--mp4 v.mp4 --overlay " + run, "--overlay"},
+  };
+  for (const auto& [options, named] : cases) {
+    const auto r = testing::run_vascsim("render " + run + " " + options, dir);
+    EXPECT_EQ(r.exit_code, 2) << options;
+    EXPECT_NE(r.err.find(named), std::string::npos) << options << ": " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace vascsim::render
