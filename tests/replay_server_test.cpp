@@ -180,6 +180,9 @@ TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
   EXPECT_DOUBLE_EQ(info["last_time"].get<double>(), 10.0);
   EXPECT_EQ(info["node_count"], 40);
   EXPECT_EQ(info["growing"], true) << "a run directory without summary.json is a run still being written";
+  // ... unless its log has not changed for a while: a killed run leaves no summary either.
+  fs::last_write_time(run + "/frames.vlog", fs::file_time_type::clock::now() - std::chrono::hours(1));
+  EXPECT_EQ(get_json(s, "/api/run")["growing"], false);
 
   render::FrameSource source(run);
   render::FrameState frame;

@@ -1,6 +1,7 @@
 #include "apps/replay/replay_run.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -30,6 +31,8 @@ json pair(double x, double y) { return json::array({number(x), number(y)}); }
 
 // The cached series of one run stay few: a page asks for a handful of channels.
 constexpr std::size_t kMaxCachedSeries = 12;
+// A log without a summary that has not grown for this long is taken as a killed run's.
+constexpr int kStaleLogSeconds = 30;
 
 }  // namespace
 
@@ -54,7 +57,10 @@ void ReplayRun::refresh() {
     return;
   }
   if (!fs::is_regular_file(summary_path, ec)) {
-    growing_ = true;
+    // No summary yet: a run still writing, unless the log has not changed for a while (a run
+    // that was killed leaves no summary either).
+    const auto written = fs::last_write_time(source_->log_path(), ec);
+    growing_ = !ec && fs::file_time_type::clock::now() - written < std::chrono::seconds(kStaleLogSeconds);
     return;
   }
   std::ifstream in(summary_path, std::ios::binary);

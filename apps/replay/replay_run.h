@@ -32,7 +32,7 @@ class ReplayRun {
 
   // Picks up frames appended since and a summary.json that appeared.
   void refresh();
-  // No summary.json yet: a `vascsim run` is still writing the log.
+  // No summary.json yet and the log changed in the last 30 s: a `vascsim run` is still writing.
   bool growing() const { return growing_; }
   const nlohmann::json& summary() const { return summary_; }
 
