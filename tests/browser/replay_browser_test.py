@@ -1,0 +1,786 @@
+#!/usr/bin/env python3
+"""Browser test of `vascsim replay`: the page in real headless Chromium, driven through Selenium.
+
+    python3 tests/browser/replay_browser_test.py --vascsim BUILD/apps/vascsim/vascsim \
+        --run RUN_DIR --run-b RUN_DIR_B --probe BUILD/tests/mp4_probe --screenshots DIR
+
+Starts `vascsim replay RUN_DIR --port 0` (later `vascsim replay RUN_DIR RUN_DIR_B`), reads the URL
+from its one stdout line, and checks in the page: no JS errors; 403 without the token; scrubbing by
+keys and by dragging the timeline; that toggling a layer shows exactly the server's frame for those
+layers; the hover readout against /api/nodes; a deep link; bookmarks; the help overlay; an MP4
+export checked with the probe (libavformat); compare mode with the tip distance against
+/api/compare. Screenshots of each mode go to --screenshots. Prints `N passed, M failed` last and
+exits non-zero on any failure.
+
+For developing the page without the C++ server, `--url URL [--url-b URL_B]` uses servers already
+running (a mock); then only the checks that need the executable (exit code) are skipped, and the
+probe check runs only when --probe is given.
+"""
+import argparse
+import base64
+import json
+import math
+import os
+import re
+import select
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import traceback
+import urllib.error
+import urllib.parse
+import urllib.request
+
+try:
+    import selenium  # noqa: F401
+except ImportError:  # Debian's python3-selenium, when python3 is not the system interpreter
+    sys.path.append('/usr/lib/python3/dist-packages')
+from selenium import webdriver
+from selenium.common.exceptions import TimeoutException, WebDriverException
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import WebDriverWait
+
+WAIT = 30          # s, the longest any single wait may take
+URL_LINE = re.compile(r'^replay: (http://127\.0\.0\.1:(\d+)/\?token=([0-9A-Za-z_-]+))$')
+
+
+class CheckFailed(Exception):
+    pass
+
+
+class Results:
+    def __init__(self):
+        self.passed = 0
+        self.failed = 0
+        self.skipped = 0
+
+    def check(self, cond, what, detail=''):
+        if cond:
+            self.passed += 1
+            print(f'PASS  {what}', flush=True)
+        else:
+            self.failed += 1
+            print(f'FAIL  {what}' + (f': {detail}' if detail else ''), flush=True)
+        return cond
+
+    def skip(self, what, why):
+        self.skipped += 1
+        print(f'SKIP  {what}: {why}', flush=True)
+
+
+R = Results()
+
+
+def close(a, b, rel=1e-9):
+    return a is not None and b is not None and abs(a - b) <= rel * max(1.0, abs(b))
+
+
+# ---------------------------------------------------------------------------- HTTP
+def http(url, data=None, method=None, headers=None):
+    """(status, headers, body) of a request; HTTP errors are answers, not exceptions."""
+    req = urllib.request.Request(url, data=data, method=method, headers=headers or {})
+    try:
+        with urllib.request.urlopen(req, timeout=WAIT) as r:
+            return r.status, dict(r.headers), r.read()
+    except urllib.error.HTTPError as e:
+        return e.code, dict(e.headers), e.read()
+
+
+class Api:
+    def __init__(self, url):
+        u = urllib.parse.urlsplit(url)
+        self.base = f'{u.scheme}://{u.netloc}'
+        self.token = urllib.parse.parse_qs(u.query).get('token', [''])[0]
+        self.page = url
+
+    def url(self, path, **params):
+        q = dict(params)
+        if self.token:
+            q['token'] = self.token
+        return f'{self.base}{path}?{urllib.parse.urlencode(q, safe=",")}'
+
+    def get(self, path, **params):
+        status, _, body = http(self.url(path, **params))
+        if status != 200:
+            raise CheckFailed(f'GET {path} {params}: HTTP {status}: {body[:300]!r}')
+        return json.loads(body)
+
+
+# ---------------------------------------------------------------------------- the server
+class Server:
+    """`vascsim replay RUNS... --port 0`: reads the URL line, stops with SIGINT."""
+
+    def __init__(self, exe, runs):
+        self.cmd = [exe, 'replay', *runs, '--port', '0']
+        print('starting:', ' '.join(self.cmd), flush=True)
+        self.proc = subprocess.Popen(self.cmd, stdout=subprocess.PIPE, stdin=subprocess.DEVNULL, text=True, bufsize=1)
+        self.extra = []
+        line = self._read_line(WAIT)
+        m = URL_LINE.match(line.rstrip('\n'))
+        if not m:
+            self.proc.kill()
+            raise CheckFailed(f'vascsim replay printed {line!r}, not "replay: http://127.0.0.1:PORT/?token=TOKEN"')
+        self.url = m.group(1)
+        self.drain = threading.Thread(target=self._drain, daemon=True)
+        self.drain.start()
+
+    def _read_line(self, timeout):
+        end = time.time() + timeout
+        while time.time() < end:
+            if self.proc.poll() is not None:
+                raise CheckFailed(f'vascsim replay exited with {self.proc.returncode} before printing its URL')
+            r, _, _ = select.select([self.proc.stdout], [], [], 0.2)
+            if r:
+                return self.proc.stdout.readline()
+        self.proc.kill()
+        raise CheckFailed(f'vascsim replay printed no URL within {timeout} s')
+
+    def _drain(self):
+        for line in self.proc.stdout:
+            self.extra.append(line)
+
+    def stop(self, what):
+        self.proc.send_signal(signal.SIGINT)
+        try:
+            code = self.proc.wait(timeout=15)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            self.proc.wait()
+            R.check(False, f'{what}: vascsim replay exits on SIGINT', 'still running 15 s after SIGINT (killed)')
+            return
+        self.drain.join(timeout=5)
+        R.check(code == 0, f'{what}: vascsim replay exits 0 on SIGINT', f'exit code {code}')
+        R.check(not self.extra, f'{what}: vascsim replay printed exactly one line on stdout',
+                f'also printed {self.extra[:5]!r}')
+
+
+# ---------------------------------------------------------------------------- the browser
+def make_driver():
+    opts = webdriver.ChromeOptions()
+    if os.path.exists('/usr/bin/chromium'):
+        opts.binary_location = '/usr/bin/chromium'
+    for a in ('--headless=new', '--no-sandbox', '--disable-gpu', '--window-size=1600,1000',
+              '--disable-dev-shm-usage', '--no-first-run', '--disable-extensions'):
+        opts.add_argument(a)
+    opts.set_capability('goog:loggingPrefs', {'browser': 'ALL'})
+    driver = webdriver.Chrome(service=Service('/usr/bin/chromedriver'), options=opts)
+    driver.set_script_timeout(WAIT)
+    driver.set_page_load_timeout(WAIT)
+    return driver
+
+
+class Page:
+    def __init__(self, driver, api):
+        self.d = driver
+        self.api = api
+        self.severe = []
+
+    def js(self, script, *args):
+        return self.d.execute_script(script, *args)
+
+    def collect_log(self):
+        try:
+            for e in self.d.get_log('browser'):
+                if e.get('level') == 'SEVERE':
+                    self.severe.append(e.get('message', str(e)))
+        except WebDriverException:
+            pass
+
+    def open(self, url):
+        self.d.get(url)
+        self.wait(lambda d: d.execute_script('return !!(window.vascsimReplay && window.vascsimReplay.state().range[1] >= 0 '
+                                             '&& document.getElementById("time-readout").textContent)'),
+                  'the page to start (window.vascsimReplay)')
+        self.ready()
+
+    def wait(self, cond, what, timeout=WAIT):
+        try:
+            return WebDriverWait(self.d, timeout, poll_frequency=0.05).until(cond)
+        except TimeoutException:
+            raise CheckFailed(f'timed out after {timeout} s waiting for {what}')
+
+    def ready(self):
+        """The shown image matches the wanted view, nothing in flight."""
+        ok = self.d.execute_async_script(
+            'const done = arguments[arguments.length - 1];'
+            'window.vascsimReplay.ready().then(() => done(true), (e) => done(String(e)));')
+        if ok is not True:
+            raise CheckFailed(f'vascsimReplay.ready() failed: {ok}')
+
+    def state(self):
+        return self.js('return window.vascsimReplay.state()')
+
+    def frame_url(self, run='a'):
+        return self.js('return window.vascsimReplay.currentFrameUrl(arguments[0])', run)
+
+    def frame_params(self, run='a'):
+        u = self.frame_url(run)
+        if not u:
+            raise CheckFailed(f'no frame shown for run {run}')
+        q = urllib.parse.parse_qs(urllib.parse.urlsplit(u).query, keep_blank_values=True)
+        return {k: v[0] for k, v in q.items()}
+
+    def frame_bytes(self, run='a'):
+        b64 = self.d.execute_async_script(
+            'const done = arguments[arguments.length - 1];'
+            'window.vascsimReplay.currentFrameBase64(arguments[0]).then(done, (e) => done(null));', run)
+        return base64.b64decode(b64) if b64 else None
+
+    def view(self, run='a'):
+        return self.js('return window.vascsimReplay.view(arguments[0])', run)
+
+    def shown_time(self):
+        text = self.d.find_element(By.ID, 'time-readout').text
+        m = re.search(r'(-?\d+(?:\.\d+)?)\s*s', text)
+        if not m:
+            raise CheckFailed(f'#time-readout shows {text!r}, not a time in s')
+        return float(m.group(1)), text
+
+    def keys(self, *keys):
+        self.js('if (document.activeElement && document.activeElement !== document.body) document.activeElement.blur();')
+        ActionChains(self.d).send_keys(*keys).perform()
+
+    def shot(self, directory, name):
+        if directory:
+            path = os.path.join(directory, name)
+            self.d.save_screenshot(path)
+            print(f'      screenshot {path}', flush=True)
+
+
+def section(name, fn, *args):
+    """Runs one group of checks; an exception is one failure, and the next group still runs."""
+    print(f'--- {name}', flush=True)
+    try:
+        fn(*args)
+    except CheckFailed as e:
+        R.check(False, name, str(e))
+    except Exception as e:  # a broken step must not hide the later checks
+        R.check(False, name, f'{type(e).__name__}: {e}')
+        traceback.print_exc()
+
+
+# ---------------------------------------------------------------------------- checks
+def check_load(page, shots):
+    page.open(page.api.page)
+    page.collect_log()
+    R.check(not page.severe, 'the page loads without JS errors', '; '.join(page.severe[:5]))
+    info = page.api.get('/api/run')
+    st = page.state()
+    R.check(st['layers'] == [l for l in info['layers'] if l in info['default_layers']],
+            'the layer toggles start at the default layers', f"{st['layers']} vs {info['default_layers']}")
+    checked = page.js('return Array.from(document.querySelectorAll("#layers input:checked")).map(c => c.value)')
+    R.check(sorted(checked) == sorted(info['default_layers']), 'the checked layer boxes are the default layers', f'{checked}')
+    img = page.js('const i = document.getElementById("frame-a"); return [i.naturalWidth, i.naturalHeight];')
+    p = page.frame_params()
+    R.check(img[0] == int(p['width']) and img[1] == int(p['height']) and int(p['width']) % 2 == 0 and int(p['height']) % 2 == 0,
+            'the map shows a frame of the requested (even) size', f'image {img}, request {p.get("width")}x{p.get("height")}')
+    page.shot(shots, 'single.png')
+
+
+def check_token(api):
+    status, _, _ = http(f'{api.base}/api/run')
+    R.check(status == 403, '/api/run without the token gets 403', f'HTTP {status}')
+    status, _, _ = http(f'{api.base}/api/run?token=0123456789abcdef0123456789abcdef')
+    R.check(status == 403, '/api/run with a wrong token gets 403', f'HTTP {status}')
+    status, _, _ = http(f'{api.base}/')
+    R.check(status == 403, 'the page without the token gets 403', f'HTTP {status}')
+    status, _, _ = http(api.url('/api/run'))
+    R.check(status == 200, '/api/run with the token gets 200', f'HTTP {status}')
+
+
+def expect_time(page, expected, what):
+    try:
+        WebDriverWait(page.d, WAIT, poll_frequency=0.05).until(lambda d: close(page.state()['t'], expected))
+    except TimeoutException:
+        pass
+    t = page.state()['t']
+    ok = R.check(close(t, expected), f'{what}: the time is {expected:.9g} s', f'state t = {t!r}')
+    shown, text = page.shown_time()
+    R.check(abs(shown - expected) <= 0.0005 + 1e-9, f'{what}: #time-readout shows {expected:.3f} s', f'shows {text!r}')
+    page.ready()
+    p = page.frame_params()
+    R.check(close(float(p['t']), expected), f'{what}: the shown frame is requested at that time', f"frame t = {p['t']}")
+    return ok
+
+
+def check_keys(page):
+    info = page.api.get('/api/run')
+    first, last, dt = info['first_time'], info['last_time'], info['output_interval']
+    page.keys(Keys.END)
+    expect_time(page, last, 'End')
+    page.keys(Keys.HOME)
+    expect_time(page, first, 'Home')
+    page.keys(Keys.ARROW_RIGHT)
+    expect_time(page, min(last, first + dt), 'Right (one logged frame)')
+    before = page.state()['t']
+    ActionChains(page.d).key_down(Keys.SHIFT).send_keys(Keys.ARROW_RIGHT).key_up(Keys.SHIFT).perform()
+    expect_time(page, min(last, before + 1.0), 'Shift+Right (1 s)')
+    page.keys(Keys.ARROW_LEFT)
+    t = page.state()['t']
+    k = round((t - first) / dt)
+    R.check(abs((t - first) / dt - k) < 1e-6 and t < min(last, before + 1.0),
+            'Left steps back onto a logged frame', f't = {t}')
+
+
+def check_drag(page):
+    info = page.api.get('/api/run')
+    first, last = info['first_time'], info['last_time']
+    track = page.d.find_element(By.ID, 'timeline-track')
+    w = track.size['width']
+    ActionChains(page.d).move_to_element_with_offset(track, int(-w / 2 + 3), 0).click_and_hold() \
+        .move_by_offset(int(w * 0.2), 0).move_by_offset(int(w * 0.2), 0) \
+        .move_to_element_with_offset(track, 0, 0).release().perform()
+    page.ready()
+    t = page.state()['t']
+    mid = first + 0.5 * (last - first)
+    R.check(abs(t - mid) <= 0.1 * (last - first), 'dragging the timeline to its middle scrubs to mid-run',
+            f't = {t:.3f}, middle {mid:.3f}')
+    shown, text = page.shown_time()
+    R.check(abs(shown - t) <= 0.0005 + 1e-9, 'after the drag #time-readout shows the time', f'{text!r} vs {t}')
+    p = page.frame_params()
+    R.check(close(float(p['t']), t, 1e-6), 'after the drag the frame shown is at the time', f"frame t = {p['t']}")
+
+
+def check_layers(page, shots):
+    info = page.api.get('/api/run')
+    before = page.state()['layers']
+    if 'trail' not in before:
+        raise CheckFailed(f'trail is not among the shown layers {before}')
+    box = page.d.find_element(By.ID, 'layer-trail')
+    box.click()
+    page.wait(lambda d: 'trail' not in page.state()['layers'], 'the trail layer to go off')
+    page.ready()
+    R.check(not box.is_selected(), 'the trail checkbox is unchecked')
+    expected = [l for l in info['layers'] if l in before and l != 'trail']
+    p = page.frame_params()
+    layers = p.get('layers', None)
+    R.check(layers is not None and 'trail' not in layers.split(','), "the frame URL's layers lack trail", f'layers={layers!r}')
+    R.check(layers is not None and sorted(layers.split(',')) == sorted(expected),
+            "the frame URL's layers are the defaults less trail", f'{layers!r} vs {expected}')
+    shown = page.frame_bytes()
+    direct = dict(p)
+    direct.pop('token', None)
+    direct['layers'] = ','.join(expected)
+    status, headers, body = http(page.api.url('/api/frame.png', **direct))
+    R.check(status == 200 and body[:8] == b'\x89PNG\r\n\x1a\n', 'the server answers /api/frame.png with a PNG', f'HTTP {status}')
+    R.check(shown is not None and shown == body, 'the image shown equals the server frame for those layers',
+            f'shown {len(shown or b"")} bytes, server {len(body)} bytes')
+    view = {k.lower(): v for k, v in headers.items()}.get('x-vascsim-view')
+    try:
+        v = json.loads(view)
+        R.check(all(k in v for k in ('time', 'scale', 'ox', 'oy')), 'the frame carries X-Vascsim-View', view)
+    except (TypeError, ValueError):
+        R.check(False, 'the frame carries X-Vascsim-View', f'{view!r}')
+    with_trail = dict(direct, layers=','.join(l for l in info['layers'] if l in before))
+    _, _, body_trail = http(page.api.url('/api/frame.png', **with_trail))
+    R.check(body_trail != body, 'the frame with the trail differs from the one without (the layer matters)')
+    page.shot(shots, 'layers.png')
+
+
+def check_hover(page, shots):
+    page.ready()
+    view = page.view()
+    if not view:
+        raise CheckFailed('no X-Vascsim-View for the shown frame')
+    nodes = page.api.get('/api/nodes', t=repr(view['time']))['nodes']
+    rect = page.js('const r = document.getElementById("frame-a").getBoundingClientRect();'
+                   'const i = document.getElementById("frame-a");'
+                   'return {left: r.left, top: r.top, width: r.width, height: r.height, nw: i.naturalWidth, nh: i.naturalHeight};')
+    box = page.d.find_element(By.ID, 'map-a')
+    brect = page.js('const r = arguments[0].getBoundingClientRect(); return {left: r.left, top: r.top, width: r.width, height: r.height};', box)
+
+    def client(n):
+        px = view['ox'] + view['scale'] * n['position'][0]
+        py = view['oy'] - view['scale'] * n['position'][1]
+        return rect['left'] + px * rect['width'] / rect['nw'], rect['top'] + py * rect['height'] / rect['nh']
+
+    tip = nodes[-1]
+    cx, cy = client(tip)
+    inside = brect['left'] + 2 < cx < brect['left'] + brect['width'] - 2 and brect['top'] + 2 < cy < brect['top'] + brect['height'] - 2
+    if not inside:
+        raise CheckFailed(f'the tip is drawn outside the map at ({cx:.1f}, {cy:.1f})')
+    ox = int(round(cx - (brect['left'] + brect['width'] / 2)))
+    oy = int(round(cy - (brect['top'] + brect['height'] / 2)))
+    ActionChains(page.d).move_to_element_with_offset(box, ox, oy).perform()
+    page.wait(lambda d: d.find_elements(By.ID, 'hover-node'), 'the hover readout to show a node')
+    # Where the pointer really is (Selenium rounds from the element's centre): the node nearest to it.
+    pointer = page.d.find_element(By.ID, 'hover-readout').get_attribute('data-pointer') or ''
+    try:
+        mx, my = (float(v) for v in pointer.split(','))
+    except ValueError:
+        raise CheckFailed(f'#hover-readout has no data-pointer ({pointer!r})')
+    R.check(math.hypot(mx - cx, my - cy) <= 1.5, 'the pointer is on the tip', f'pointer ({mx}, {my}), tip ({cx:.2f}, {cy:.2f})')
+    dists = [math.hypot(client(n)[0] - mx, client(n)[1] - my) for n in nodes]
+    k = min(range(len(nodes)), key=lambda i: dists[i])
+    want = nodes[k]
+    idx = page.d.find_element(By.ID, 'hover-node').text.strip()
+    R.check(idx == str(want['index']), 'hovering the tip shows its node index', f'readout node {idx}, nearest {want["index"]} (tip {tip["index"]})')
+    x_text = page.d.find_element(By.ID, 'hover-x').text
+    y_text = page.d.find_element(By.ID, 'hover-y').text
+
+    def mm(text):
+        m = re.search(r'-?\d+(?:\.\d+)?', text)
+        return float(m.group(0)) if m else None
+    x_mm, y_mm = mm(x_text), mm(y_text)
+    R.check(x_mm is not None and abs(x_mm - want['position'][0] * 1e3) <= 0.0006,
+            'the hover readout shows the node x in mm from /api/nodes', f'{x_text!r} vs {want["position"][0] * 1e3:.4f}')
+    R.check(y_mm is not None and abs(y_mm - want['position'][1] * 1e3) <= 0.0006,
+            'the hover readout shows the node y in mm from /api/nodes', f'{y_text!r} vs {want["position"][1] * 1e3:.4f}')
+    speed = page.d.find_elements(By.ID, 'hover-speed')
+    if 'speed' in want:
+        s_mm = mm(speed[0].text) if speed else None
+        R.check(s_mm is not None and abs(s_mm - want['speed'] * 1e3) <= 0.0006, 'the hover readout shows the node speed in mm/s',
+                f'{speed[0].text if speed else None!r} vs {want["speed"] * 1e3:.4f}')
+    rows = page.js('return Array.from(document.querySelectorAll("#hover-readout [data-force]")).map(r => r.dataset.force)')
+    R.check(sorted(rows) == sorted(want.get('forces', {}).keys()), 'the hover readout lists every force at the node',
+            f'{rows} vs {sorted(want.get("forces", {}).keys())}')
+    page.shot(shots, 'hover.png')
+    ActionChains(page.d).move_to_element(page.d.find_element(By.ID, 'sidebar')).perform()
+
+
+def _client_of(page, view, world):
+    """Client (CSS px) position of a world point on map A's shown image."""
+    r = page.js('const i = document.getElementById("frame-a"); const r = i.getBoundingClientRect();'
+                'return [r.left, r.top, r.width, r.height, i.naturalWidth, i.naturalHeight];')
+    px = view['ox'] + view['scale'] * world[0]
+    py = view['oy'] - view['scale'] * world[1]
+    return r[0] + px * r[2] / r[4], r[1] + py * r[3] / r[5]
+
+
+def _world_at(page, view, cx, cy):
+    r = page.js('const i = document.getElementById("frame-a"); const r = i.getBoundingClientRect();'
+                'return [r.left, r.top, r.width, r.height, i.naturalWidth, i.naturalHeight];')
+    px = (cx - r[0]) * r[4] / r[2]
+    py = (cy - r[1]) * r[5] / r[3]
+    return (px - view['ox']) / view['scale'], (view['oy'] - py) / view['scale']
+
+
+def check_zoom_pan(page):
+    page.keys('f')
+    page.wait(lambda d: page.state()['camera'] == 'fit' and page.state()['zoom'] == 1, 'F to fit')
+    page.ready()
+    box = page.d.find_element(By.ID, 'map-a')
+    b = page.js('const r = arguments[0].getBoundingClientRect(); return [r.left, r.top, r.width, r.height];', box)
+    ox, oy = int(-b[2] * 0.15), int(-b[3] * 0.1)
+    cx, cy = b[0] + b[2] / 2 + ox, b[1] + b[3] / 2 + oy
+    world = _world_at(page, page.view(), cx, cy)
+    ActionChains(page.d).scroll_from_origin(ScrollOrigin.from_element(box, ox, oy), 0, -300).perform()
+    page.wait(lambda d: page.state()['camera'] == 'center' and page.state()['zoom'] > 1.05, 'the wheel to zoom in')
+    page.ready()
+    st = page.state()
+    after = _client_of(page, page.view(), world)
+    R.check(math.hypot(after[0] - cx, after[1] - cy) <= 2.0, 'wheel zoom keeps the point under the cursor',
+            f'zoom {st["zoom"]}, point moved from ({cx:.1f}, {cy:.1f}) to ({after[0]:.1f}, {after[1]:.1f})')
+    p = page.frame_params()
+    R.check(p.get('camera') == 'center' and 'center' in p and close(float(p['zoom']), st['zoom'], 1e-5),
+            'the zoomed frame is requested with camera=center, center and zoom', f'{p}')
+    # Drag the map: the point under the pointer follows it.
+    start = (cx, cy)
+    world = _world_at(page, page.view(), *start)
+    ActionChains(page.d).move_to_element_with_offset(box, ox, oy).click_and_hold().move_by_offset(40, 20) \
+        .move_by_offset(60, 30).release().perform()
+    page.ready()
+    after = _client_of(page, page.view(), world)
+    R.check(math.hypot(after[0] - (cx + 100), after[1] - (cy + 50)) <= 2.0, 'dragging the map pans with the pointer',
+            f'point at ({after[0]:.1f}, {after[1]:.1f}), pointer at ({cx + 100:.1f}, {cy + 50:.1f})')
+    z = page.state()['zoom']
+    page.keys('+')
+    page.wait(lambda d: page.state()['zoom'] > z * 1.01, '+ to zoom in')
+    R.check(page.state()['camera'] == 'center', '+ zooms about the map centre (camera stays)', f'{page.state()}')
+    page.keys('t')
+    page.wait(lambda d: page.state()['camera'] == 'follow', 'T to follow the tip')
+    page.ready()
+    R.check(page.frame_params().get('camera') == 'follow', 'T requests camera=follow', f'{page.frame_params()}')
+    page.keys('f')
+    page.wait(lambda d: page.state()['camera'] == 'fit' and page.state()['zoom'] == 1, 'F to fit')
+    page.ready()
+    R.check(page.frame_params().get('camera') == 'fit' and float(page.frame_params().get('zoom')) == 1, 'F requests camera=fit, zoom=1')
+
+
+def check_playback(page):
+    page.keys(Keys.HOME)
+    page.wait(lambda d: close(page.state()['t'], page.state()['range'][0]), 'Home')
+    from selenium.webdriver.support.ui import Select
+    Select(page.d.find_element(By.ID, 'speed-select')).select_by_value('4')
+    page.wait(lambda d: page.state()['speed'] == 4, 'the speed to be 4x')
+    t0, w0 = page.js('return [window.vascsimReplay.state().t, performance.now()]')
+    page.keys(Keys.SPACE)
+    page.wait(lambda d: page.state()['playing'], 'Space to start playback')
+    page.wait(lambda d: page.state()['t'] >= t0 + 2.0 or not page.state()['playing'], 'playback to advance 2 s')
+    page.keys(Keys.SPACE)
+    page.wait(lambda d: not page.state()['playing'], 'Space to pause')
+    t1, w1 = page.js('return [window.vascsimReplay.state().t, performance.now()]')
+    rate = (t1 - t0) / max(1e-3, (w1 - w0) / 1000)
+    R.check(t1 > t0 and 2.0 <= rate <= 4.4, 'playback at 4x advances about 4 simulated s per second', f'{rate:.2f} s/s')
+    page.ready()
+    p = page.frame_params()
+    R.check(close(float(p['t']), page.state()['t']), 'after pausing the frame shown is at the time', f"{p['t']} vs {page.state()['t']}")
+    Select(page.d.find_element(By.ID, 'speed-select')).select_by_value('1')
+
+
+def check_deeplink(page, shots):
+    info = page.api.get('/api/run')
+    expected_t = min(max(10.0, info['first_time']), info['last_time'])
+    page.d.get('about:blank')
+    page.open(page.api.page + '#t=10&zoom=2&camera=follow&layers=walls,rod')
+    st = page.state()
+    R.check(close(st['t'], expected_t), 'the deep link sets the time', f"t = {st['t']}")
+    shown, text = page.shown_time()
+    R.check(abs(shown - expected_t) <= 0.0005, f'the deep link shows {expected_t:.3f} s', f'{text!r}')
+    zoom = page.d.find_element(By.ID, 'zoom-input').get_attribute('value')
+    R.check(zoom is not None and close(float(zoom), 2.0), 'the zoom control shows 2', f'{zoom!r}')
+    cam = page.d.find_element(By.ID, 'camera-select').get_attribute('value')
+    R.check(cam == 'follow', 'the camera control shows follow', f'{cam!r}')
+    checked = page.js('return Array.from(document.querySelectorAll("#layers input:checked")).map(c => c.value)')
+    R.check(sorted(checked) == ['rod', 'walls'], 'the layer boxes show walls and rod only', f'{checked}')
+    p = page.frame_params()
+    R.check(close(float(p.get('t', 'nan')), expected_t) and close(float(p.get('zoom', 'nan')), 2.0)
+            and p.get('camera') == 'follow' and p.get('layers') == 'walls,rod',
+            'the frame is requested with the link\'s view', f'{p}')
+    page.shot(shots, 'deeplink.png')
+    # A changed fragment (a pasted link, the back button) is applied too.
+    t2 = min(max(5.0, info['first_time']), info['last_time'])
+    page.js('location.hash = arguments[0]', f't={t2}&zoom=1&camera=fit&layers={",".join(info["default_layers"])}')
+    page.wait(lambda d: close(page.state()['t'], t2) and page.state()['camera'] == 'fit', 'the new fragment to apply')
+    page.ready()
+    st = page.state()
+    R.check(close(st['zoom'], 1.0) and sorted(st['layers']) == sorted(info['default_layers']),
+            'a changed fragment is applied', f'{st}')
+    # The page keeps its fragment up to date: it reopens the exact view.
+    page.keys(Keys.ARROW_RIGHT)
+    try:
+        WebDriverWait(page.d, 5, poll_frequency=0.05).until(lambda d: close(_hash_t(d), page.state()['t'], 1e-8))
+    except TimeoutException:
+        pass
+    R.check(close(_hash_t(page.d), page.state()['t'], 1e-8), 'the URL fragment holds the current time',
+            page.js('return location.hash'))
+
+
+def _hash_t(d):
+    h = d.execute_script('return location.hash')
+    m = re.search(r'[#&]t=([-0-9.eE+]+)', h or '')
+    return float(m.group(1)) if m else None
+
+
+def check_bookmark(page):
+    name = f'browser test {int(time.time() * 1000) % 100000}'
+    page.keys('b')
+    page.wait(lambda d: d.find_element(By.ID, 'bookmark-dialog').is_displayed(), 'the bookmark dialog')
+    field = page.d.find_element(By.ID, 'bookmark-name')
+    page.wait(lambda d: d.switch_to.active_element == field, 'the name field to have focus', timeout=5)
+    t = page.state()['t']
+    field.send_keys(name)
+    field.send_keys(Keys.ENTER)
+    page.wait(lambda d: not d.find_element(By.ID, 'bookmark-dialog').is_displayed(), 'the dialog to close')
+    page.wait(lambda d: name in d.find_element(By.ID, 'bookmark-list').text, 'the bookmark in the list')
+    R.check(True, 'the bookmark appears in the list')
+    marks = page.api.get('/api/bookmarks')['bookmarks']
+    mine = [b for b in marks if b.get('name') == name]
+    R.check(len(mine) == 1 and close(float(mine[0]['t']), t, 1e-6) and 't=' in mine[0].get('view', ''),
+            'GET /api/bookmarks has it with its time and view', f'{mine}')
+    # Clicking it brings its view back.
+    page.keys(Keys.HOME)
+    page.wait(lambda d: not close(page.state()['t'], t) or close(t, page.state()['range'][0]), 'Home')
+    items = [li for li in page.d.find_elements(By.CSS_SELECTOR, '#bookmark-list li') if li.get_attribute('data-name') == name]
+    if items:
+        items[0].click()
+        page.wait(lambda d: close(page.state()['t'], t, 1e-6), 'the bookmark to apply', timeout=10)
+    R.check(bool(items) and close(page.state()['t'], t, 1e-6), 'clicking the bookmark returns to its time', f"t = {page.state()['t']}")
+
+
+def check_help(page, shots):
+    page.keys('?')
+    page.wait(lambda d: d.find_element(By.ID, 'help-overlay').is_displayed(), 'the help overlay')
+    R.check(True, '? shows the shortcut help')
+    page.shot(shots, 'help.png')
+    page.keys(Keys.ESCAPE)
+    page.wait(lambda d: not d.find_element(By.ID, 'help-overlay').is_displayed(), 'Escape to close the help')
+    R.check(True, 'Escape closes the help')
+
+
+def check_export(page, shots, probe, workdir):
+    info = page.api.get('/api/run')
+    t0 = info['first_time']
+    t1 = min(info['last_time'], t0 + 1.0)
+    for fid, value in (('export-from', t0), ('export-to', t1)):
+        el = page.d.find_element(By.ID, fid)
+        el.clear()
+        el.send_keys(repr(value))
+    page.js('document.activeElement.blur()')
+    size = page.state()['size']
+    page.d.find_element(By.ID, 'export-start').click()
+    page.wait(lambda d: d.find_element(By.ID, 'export-progress').is_displayed(), 'the export progress bar')
+    R.check(True, 'the export shows its progress')
+    page.wait(lambda d: d.find_element(By.ID, 'export-download').is_displayed()
+              or 'failed' in d.find_element(By.ID, 'export-status').text, 'the export to finish')
+    link = page.d.find_element(By.ID, 'export-download')
+    R.check(link.is_displayed(), 'the export finishes and offers a download', page.d.find_element(By.ID, 'export-status').text)
+    href = link.get_attribute('href') or ''
+    m = re.search(r'/api/export/file\?(?:.*&)?id=(\d+)', href)
+    if not m:
+        raise CheckFailed(f'the download link {href!r} is not /api/export/file?id=N')
+    eid = m.group(1)
+    st = page.api.get('/api/export/status', id=eid)
+    R.check(st.get('state') == 'done' and st.get('frames_done') == st.get('frames_total'), 'the export status is done', f'{st}')
+    status, _, body = http(page.api.url('/api/export/file', id=eid))
+    R.check(status == 200 and len(body) > 0, 'the exported MP4 downloads', f'HTTP {status}, {len(body)} bytes')
+    page.shot(shots, 'export.png')
+    if not probe:
+        R.skip('the MP4 is H.264 of the view size', 'no --probe given')
+        return
+    path = os.path.join(workdir, 'export.mp4')
+    with open(path, 'wb') as f:
+        f.write(body)
+    out = subprocess.run([probe, path], capture_output=True, text=True, timeout=WAIT)
+    try:
+        meta = json.loads(out.stdout)
+    except ValueError:
+        raise CheckFailed(f'{probe} printed {out.stdout!r} (stderr {out.stderr!r}, exit {out.returncode})')
+    R.check(meta.get('codec') == 'h264', 'the exported video is H.264', f'{meta}')
+    R.check((meta.get('frames') or 0) > 0, 'the exported video has frames', f'{meta}')
+    R.check(meta.get('frames') == st.get('frames_total'), 'the exported video has the frames the status counted',
+            f"{meta.get('frames')} vs {st.get('frames_total')}")
+    R.check([meta.get('width'), meta.get('height')] == size, 'the exported video has the view size', f'{meta} vs view {size}')
+
+
+def check_compare(page, shots):
+    page.open(page.api.page)
+    page.collect_log()
+    R.check(not page.severe, 'compare: the page loads without JS errors', '; '.join(page.severe[:5]))
+    a, b = page.api.get('/api/run', run='a'), page.api.get('/api/run', run='b')
+    R.check('b' in a.get('runs', []), "compare: /api/run lists run b", f"{a.get('runs')}")
+    st = page.state()
+    want = [min(a['first_time'], b['first_time']), max(a['last_time'], b['last_time'])]
+    R.check(close(st['range'][0], want[0]) and close(st['range'][1], want[1]),
+            'compare: the timeline covers both runs', f"{st['range']} vs {want}")
+    shown = page.js('return ["frame-a", "frame-b"].map(id => { const i = document.getElementById(id); const r = i.getBoundingClientRect();'
+                    ' return [i.naturalWidth, r.width, r.left]; })')
+    R.check(all(s[0] > 0 and s[1] > 0 for s in shown) and shown[1][2] > shown[0][2] + shown[0][1] * 0.5,
+            'compare: both maps are shown side by side', f'{shown}')
+    pa, pb = page.frame_params('a'), page.frame_params('b')
+    R.check(pb.get('run') == 'b' and all(pa.get(k) == pb.get(k) for k in ('t', 'width', 'height', 'camera', 'zoom', 'layers')),
+            "compare: map B is run b's frame with the same view", f'{pa} / {pb}')
+
+    def distance_matches(what):
+        t = page.state()['t']
+        page.wait(lambda d: d.find_element(By.ID, 'tip-distance').get_attribute('data-t') is not None and
+                  close(float(d.find_element(By.ID, 'tip-distance').get_attribute('data-t')), t, 1e-8),
+                  'the tip distance at the current time')
+        text = page.d.find_element(By.ID, 'tip-distance').text
+        m = re.search(r'(-?\d+(?:\.\d+)?)\s*mm', text)
+        c = page.api.get('/api/compare', t=repr(t))
+        R.check(m is not None and abs(float(m.group(1)) / 1e3 - c['tip_distance']) <= 1e-6,
+                f'compare: the tip distance {what} equals /api/compare', f'{text!r} vs {c["tip_distance"]} m')
+    distance_matches('at the start')
+    page.keys(Keys.END)
+    page.wait(lambda d: close(page.state()['t'], want[1]), 'End')
+    page.ready()
+    distance_matches('at the end')
+    ActionChains(page.d).key_down(Keys.SHIFT).send_keys(Keys.ARROW_LEFT).key_up(Keys.SHIFT).perform()
+    page.ready()
+    distance_matches('1 s before the end')
+    page.shot(shots, 'compare.png')
+    # Overlay: one map, run a's frame with run b's rod.
+    from selenium.webdriver.support.ui import Select
+    Select(page.d.find_element(By.ID, 'compare-mode')).select_by_value('overlay')
+    page.wait(lambda d: not d.find_element(By.ID, 'map-b').is_displayed(), 'map B to hide in overlay mode')
+    page.ready()
+    p = page.frame_params('a')
+    R.check(p.get('overlay') == 'b', 'compare: the overlay toggle requests overlay=b', f'{p}')
+    page.shot(shots, 'compare_overlay.png')
+    page.collect_log()
+
+
+# ---------------------------------------------------------------------------- main
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    ap.add_argument('--vascsim', help='the vascsim executable')
+    ap.add_argument('--run', help='run directory A')
+    ap.add_argument('--run-b', help='run directory B (compare mode)')
+    ap.add_argument('--probe', help='the MP4 probe: PROBE FILE prints {"codec", "frames", "width", "height", "duration"}')
+    ap.add_argument('--screenshots', help='directory for screenshots')
+    ap.add_argument('--url', help='development only: use this running server instead of starting vascsim')
+    ap.add_argument('--url-b', help='development only: a running server in compare mode')
+    args = ap.parse_args()
+    if not args.url and not (args.vascsim and args.run):
+        ap.error('--vascsim and --run are required (or --url for a running server)')
+    if not args.url and not args.probe:
+        ap.error('--probe is required when vascsim is started by the test')
+    if args.screenshots:
+        os.makedirs(args.screenshots, exist_ok=True)
+    workdir = tempfile.mkdtemp(prefix='replay_browser_test_')
+    started = time.time()
+    driver = None
+    server = None
+    try:
+        try:
+            if args.url:
+                url = args.url
+            else:
+                server = Server(args.vascsim, [args.run])
+                url = server.url
+            api = Api(url)
+            driver = make_driver()
+            page = Page(driver, api)
+            section('page load', check_load, page, args.screenshots)
+            section('token', check_token, api)
+            section('scrub by keys', check_keys, page)
+            section('scrub by dragging the timeline', check_drag, page)
+            section('layer toggle', check_layers, page, args.screenshots)
+            section('hover readout', check_hover, page, args.screenshots)
+            section('zoom and pan', check_zoom_pan, page)
+            section('playback', check_playback, page)
+            section('deep link', check_deeplink, page, args.screenshots)
+            section('bookmark', check_bookmark, page)
+            section('help overlay', check_help, page, args.screenshots)
+            section('export', check_export, page, args.screenshots, args.probe, workdir)
+            page.collect_log()
+            R.check(not page.severe, 'no JS errors in the browser log (single run)', '; '.join(page.severe[:5]))
+            page.severe.clear()
+            if server:
+                server.stop('single run')
+                server = None
+            if args.url_b or (args.vascsim and args.run_b and not args.url):
+                if args.url_b:
+                    url_b = args.url_b
+                else:
+                    server = Server(args.vascsim, [args.run, args.run_b])
+                    url_b = server.url
+                page_b = Page(driver, Api(url_b))
+                section('compare mode', check_compare, page_b, args.screenshots)
+                page_b.collect_log()
+                R.check(not page_b.severe, 'no JS errors in the browser log (compare)', '; '.join(page_b.severe[:5]))
+                if server:
+                    server.stop('compare')
+                    server = None
+            else:
+                R.skip('compare mode', 'no --run-b / --url-b')
+        except CheckFailed as e:
+            R.check(False, 'setup', str(e))
+        except WebDriverException as e:
+            R.check(False, 'browser', str(e).splitlines()[0] if str(e) else repr(e))
+    finally:
+        if driver:
+            try:
+                driver.quit()
+            except WebDriverException:
+                pass
+        if server:
+            server.proc.kill()
+            server.proc.wait()
+        shutil.rmtree(workdir, ignore_errors=True)
+    print(f'({time.time() - started:.1f} s, {R.skipped} skipped)', flush=True)
+    print(f'{R.passed} passed, {R.failed} failed', flush=True)
+    return 1 if R.failed else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
