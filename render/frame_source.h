@@ -53,6 +53,8 @@ class FrameSource {
   // Index of the last logged frame with time <= t.
   std::size_t frame_at_time(double t) const { return reader_.frame_at_time(t); }
   double time_of(std::size_t i) const { return reader_.time_of(i); }
+  // Logged frame i's raw record: time, then every channel's values (docs/frame-log.md).
+  void record(std::size_t i, std::vector<double>& out) const { reader_.read(i, out); }
   // The tip (last node) of logged frame i, reading only its two values.
   Vec2 tip_of(std::size_t i) const;
   // Re-polls the log for frames appended since (a run still writing it). Returns true if the
