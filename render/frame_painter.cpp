@@ -94,8 +94,8 @@ double max_node_force(const std::vector<double>& f) {
   return m;
 }
 
-constexpr Rgba kOverlayRod = hex(0x7B2FBE, 0.8f);
-constexpr Rgba kOverlayEdge = hex(0x3F1463, 0.8f);
+constexpr Rgba kOverlayRod = hex(0xE64980, 0.6f);
+constexpr Rgba kOverlayEdge = hex(0xA61E4D, 0.6f);
 constexpr Rgba kFriction = hex(0x2B8A3E);
 constexpr Rgba kDrag = hex(0x0C8599);
 constexpr Rgba kNode = hex(0xFFFFFF);
@@ -198,6 +198,7 @@ void FramePainter::paint(Canvas& c, const FrameState& frame, const std::vector<V
                          const FrameState* overlay) {
   c.clear(kPage);
   paint_world(c, camera(frame), frame, trail, overlay);
+  overlay_shown_ = overlay && view_.layers.has(Layer::kRod);
   if (view_.panel()) paint_panel(c, frame);
 }
 
@@ -238,8 +239,9 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
 
   if (on.has(Layer::kPath) && f.has_reference) c.ring(apply(m, f.reference), 0.6f * marker, 0.25f * marker, kPath);
 
-  if (overlay && on.has(Layer::kRod)) paint_rod(c, m, *overlay, kOverlayRod, kOverlayEdge, kOverlayEdge);
   if (on.has(Layer::kRod)) paint_rod(c, m, f, kRod, kRodEdge, kTip);
+  // The other run's rod on top, translucent: where the two coincide both stay visible.
+  if (overlay && on.has(Layer::kRod)) paint_rod(c, m, *overlay, kOverlayRod, kOverlayEdge, kOverlayEdge);
   scratch_.clear();
   for (std::size_t i = 0; i < f.node_count(); ++i) scratch_.push_back(apply(m, f.node(i)));
   if (on.has(Layer::kNodes)) {
@@ -400,6 +402,11 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kRod);
   std::snprintf(buf, sizeof buf, "catheter \xC3\x98 %.2f mm", 2e3 * meta_.rod_outer_radius);
   entry(buf);
+  if (overlay_shown_) {
+    c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kOverlayEdge);
+    c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kOverlayRod);
+    entry("compared run's catheter");
+  }
   c.dashed_polyline({{lx, y + mid}, {sym_end, y + mid}}, std::max(1.5f, H / 400.0f), 6.0f, 4.0f, kPath);
   entry("reference path");
   c.capsule({lx, y + mid}, {sym_end, y + mid}, 0.5f * std::max(2.0f, H / 300.0f), kTrail);

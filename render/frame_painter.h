@@ -87,6 +87,7 @@ class FramePainter {
   float map_y0_;                  // px, top of the map (below the HUD card of narrow frames)
   float map_y1_;                  // px, bottom of the map (above the legend band of narrow frames)
   bool side_panel_;
+  bool overlay_shown_ = false;    // the frame being painted shows another run's rod
   double scale_ = 1;              // px per m
   int font_px_;
   std::vector<glm::vec2> scratch_;
