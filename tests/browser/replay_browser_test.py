@@ -25,6 +25,7 @@ import re
 import select
 import shutil
 import signal
+import struct
 import subprocess
 import sys
 import tempfile
@@ -699,6 +700,84 @@ def check_compare(page, shots):
     page.collect_log()
 
 
+
+def log_layout(path):
+    """(data offset, record bytes) of a frame log (docs/frame-log.md)."""
+    with open(path, 'rb') as f:
+        head = f.read(1 << 22)
+    if head[:8] != b'VSIMLOG\0':
+        raise CheckFailed(f'{path}: not a frame log')
+    _, _, channels = struct.unpack_from('<III', head, 8)
+    at, doubles = 20, 1
+    for _ in range(channels):
+        for _ in range(2):  # name, unit
+            (n,) = struct.unpack_from('<I', head, at)
+            at += 4 + n
+        at += 1  # layout
+        (count,) = struct.unpack_from('<I', head, at)
+        at += 4
+        doubles += count
+    (n,) = struct.unpack_from('<I', head, at)
+    at += 4 + n
+    return (at + 7) // 8 * 8, 8 * doubles
+
+
+def check_live(driver, exe, run, shots, workdir):
+    """A log still being written: the page shows "live", follows the end, then the summary."""
+    src = os.path.join(run, 'frames.vlog')
+    data, record = log_layout(src)
+    with open(src, 'rb') as f:
+        whole = f.read()
+    frames = (len(whole) - data) // record
+    live_dir = os.path.join(workdir, 'live')
+    os.makedirs(live_dir)
+    log = os.path.join(live_dir, 'frames.vlog')
+    first = max(2, frames // 4)
+    with open(log, 'wb') as f:
+        f.write(whole[:data + first * record])
+    server = Server(exe, [live_dir])
+    writer = None
+    stop = threading.Event()
+    try:
+        api = Api(server.url)
+        page = Page(driver, api)
+        page.open(api.page)
+        page.wait(lambda d: d.find_element(By.ID, 'live-badge').is_displayed(), 'the live badge')
+        R.check(True, 'live: a log without summary.json shows the live badge')
+        page.keys(Keys.END)
+        page.ready()
+        t_start, _ = page.shown_time()
+
+        def append():  # the rest of the log, a few frames at a time, as a run writes it
+            with open(log, 'ab') as f:
+                for k in range(first, frames, 40):
+                    if stop.is_set():
+                        return
+                    f.write(whole[data + k * record:data + min(frames, k + 40) * record])
+                    f.flush()
+                    time.sleep(0.1)
+        writer = threading.Thread(target=append, daemon=True)
+        writer.start()
+        page.wait(lambda d: page.shown_time()[0] > t_start + 1.0, 'the cursor to follow the growing log')
+        R.check(True, 'live: the cursor at the end follows frames appended after start')
+        page.shot(shots, 'live.png')
+        writer.join(timeout=60)
+        page.wait(lambda d: abs(page.shown_time()[0] - api.get('/api/run')['last_time']) < 1e-6,
+                  'the cursor to reach the new end of the log')
+        R.check(True, 'live: the cursor ends at the last appended frame')
+        shutil.copy(os.path.join(run, 'summary.json'), os.path.join(live_dir, 'summary.json'))
+        page.wait(lambda d: not d.find_element(By.ID, 'live-badge').is_displayed(), 'the live badge to go')
+        R.check(True, 'live: the badge goes when summary.json appears')
+        page.wait(lambda d: 'goal' in d.find_element(By.ID, 'summary').text, 'the summary to be shown')
+        R.check(True, 'live: the summary is shown when it appears')
+        page.collect_log()
+        R.check(not page.severe, 'no JS errors in the browser log (live)', '; '.join(page.severe[:5]))
+    finally:
+        stop.set()
+        if writer:
+            writer.join(timeout=10)
+        server.stop('live')
+
 # ---------------------------------------------------------------------------- main
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
@@ -748,6 +827,8 @@ def main():
             if server:
                 server.stop('single run')
                 server = None
+            if not args.url:
+                section('live follow', check_live, driver, args.vascsim, args.run, args.screenshots, workdir)
             if args.url_b or (args.vascsim and args.run_b and not args.url):
                 if args.url_b:
                     url_b = args.url_b
