@@ -72,7 +72,7 @@ TEST(CliRun, DivergingRunStopsWithMessageAndKeepsItsFrames) {
 }
 
 TEST(CliRun, StaticModeRecordsTheUnloadedRodAndItsEquilibrium) {
-  // Small-deflection cantilever, tip deflection P L^3 / (3 EI) (REFERENCES.md section 2);
+  // Small-deflection cantilever, tip deflection P L^3 / (3 EI) (docs/references.md section 1);
   // alpha = P L^2 / EI = 0.01 keeps the elastica's nonlinear correction below 1e-5.
   const double pi = 3.14159265358979323846;
   const double ei = 1.47e6 * pi * (std::pow(0.002, 4) - std::pow(0.001, 4)) / 4.0;  // Table I

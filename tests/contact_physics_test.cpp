@@ -1,4 +1,4 @@
-// Wall contact and friction against closed-form references (../shared/refs/REFERENCES.md):
+// Wall contact and friction against closed-form references (docs/references.md):
 //   - a rod resting on a wall under its weight: the contact forces balance the weight (statics);
 //   - section 7, block on an incline: tan(theta) = 0.5, mu = 0.5 sticks, mu = 0.49 slides with
 //     a = g (sin theta - mu cos theta) = 0.087743 m/s^2;
@@ -122,7 +122,7 @@ TEST(ContactPhysics, InclineSlidesAtMuPointFortyNineWithTheReferenceAcceleration
   const double v1 = rig.mean_velocity(s).x();
   rig.advance(s, ws, 2.0);
   const double v2 = rig.mean_velocity(s).x();
-  const double expected = 0.087743;  // refs section 7
+  const double expected = 0.087743;  // docs/references.md section 7
   EXPECT_NEAR(v2 - v1, expected, 0.02 * expected);
 }
 
@@ -131,14 +131,15 @@ TEST(ContactPhysics, RodPulledAlongAFloorSticksThenSlides) {
   for (double load : {0.9, 2.0}) {
     FloorRig rig(Vec2(0.0, -kG), mu);
     const double threshold = mu * rig.mass() * kG;
-    Controls pull;
-    pull.forces.push_back({-1, Vec2(load * threshold, 0.0)});
-    rig.model.forces.push_back(std::make_unique<ControlForceModule>(rig.model.nodes()));
+    PointLoadSpec pull;
+    pull.node = -1;
+    pull.force = Vec2(load * threshold, 0.0);
+    rig.model.forces.push_back(std::make_unique<PointLoadModule>(rig.model.nodes(), std::vector<PointLoadSpec>{pull}));
     State s = initial_state(rig.model);
     Workspace ws(rig.model);
-    rig.advance(s, ws, 0.5, pull);
+    rig.advance(s, ws, 0.5);
     const double v1 = rig.mean_velocity(s).x();
-    rig.advance(s, ws, 1.5, pull);
+    rig.advance(s, ws, 1.5);
     const double v2 = rig.mean_velocity(s).x();
     if (load < 1.0) {
       EXPECT_LT(std::abs(v2), rig.params.slip_velocity) << "should stick at F = " << load << " mu m g";

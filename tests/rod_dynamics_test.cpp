@@ -1,5 +1,5 @@
 // Dynamic validation of the stepper (sim/step/stepper.h) against references the code did not
-// produce: the exact discrete backward Euler oscillator and its damping (refs REFERENCES.md
+// produce: the exact discrete backward Euler oscillator and its damping (docs/references.md
 // sections 0.2 and 5), convergence orders of backward Euler and BDF2, cantilever natural
 // frequencies (section 2), quadratic drag terminal velocity and backward Euler transient
 // (section 4), and the sign of external forces.
@@ -18,7 +18,7 @@ namespace vascsim {
 namespace {
 
 // Three collinear nodes with the first edge clamped: node 2 on the last edge moving along the
-// axis is an exactly linear spring k = EA/l0 (refs section 5) with mass m = rho A l0 / 2, and
+// axis is an exactly linear spring k = EA/l0 (docs/references.md section 5) with mass m = rho A l0 / 2, and
 // k/m = 2 E / (rho l0^2) = (2 pi)^2 by the choice of E.
 struct Oscillator {
   Scene scene;
@@ -50,14 +50,14 @@ struct Oscillator {
   }
 };
 
-// refs section 5 (Hairer & Wanner): w = 2 pi, x0 = 1, after 1 s.
+// docs/references.md section 5 (Hairer & Wanner): w = 2 pi, x0 = 1, after 1 s.
 TEST(RodDynamics, BackwardEulerOscillatorMatchesExactDiscreteSolution) {
   const Oscillator osc(Scheme::kBackwardEuler);
   EXPECT_NEAR(osc.run(0.1, 10), 0.1480882808, 1e-9);
   EXPECT_NEAR(osc.run(0.01, 100), 0.8211598426, 1e-9);
 }
 
-// refs section 0.2: each backward Euler step multiplies the amplitude by 1/sqrt(1 + h^2).
+// docs/references.md section 0.2: each backward Euler step multiplies the amplitude by 1/sqrt(1 + h^2).
 TEST(RodDynamics, BackwardEulerDampingPerStep) {
   const Oscillator osc(Scheme::kBackwardEuler);
   const double w = 2 * M_PI;
@@ -83,11 +83,11 @@ double measured_order(Scheme scheme) {
 TEST(RodDynamics, BackwardEulerIsFirstOrder) { EXPECT_NEAR(measured_order(Scheme::kBackwardEuler), 1.0, 0.15); }
 TEST(RodDynamics, Bdf2IsSecondOrder) { EXPECT_NEAR(measured_order(Scheme::kBdf2), 2.0, 0.15); }
 
-// refs section 2 (Blevins): clamped-free, w_n = (beta_n L)^2 sqrt(EI / (rho A L^4)). The
+// docs/references.md section 2 (Blevins): clamped-free, w_n = (beta_n L)^2 sqrt(EI / (rho A L^4)). The
 // transverse stiffness of the straight cantilever (centred clamp) and the lumped masses give the
 // discrete frequencies as a generalised eigenproblem. The DER stencil is the central difference
 // of the fourth derivative, whose symbol (2 - 2 cos k dl)^2 / dl^4 makes w_n low by
-// (beta_n dl)^2 / 12: 1e-4 for mode 1 at N = 41 (as refs section 2 says) but 1.2e-3 and 3.3e-3
+// (beta_n dl)^2 / 12: 1e-4 for mode 1 at N = 41 (as docs/references.md section 2 says) but 1.2e-3 and 3.3e-3
 // for modes 2 and 3, so those are checked at N = 81 where the same estimate gives 3e-4 and 8e-4.
 Eigen::VectorXd cantilever_frequencies(int nodes) {
   const Scene scene = test::cantilever(nodes);
@@ -174,7 +174,7 @@ TEST(RodDynamics, QuadraticDragBackwardEulerTransientIsExact) {
 }
 
 // Drag on every node splits into cross-flow and axial parts (the cross-flow principle, paper
-// V.A's refinement; refs section 4 for each part). A straight solid rod falling at 30 degrees to
+// V.A's refinement; docs/references.md section 4 for each part). A straight solid rod falling at 30 degrees to
 // its axis reaches each part's own terminal speed, m g_t = c_t v_t^2 and m g_n = c_n v_n^2, so it
 // drifts along itself far faster than the fall direction suggests; it neither turns nor bends
 // (c_i / m_i is the same on every node).
@@ -256,8 +256,6 @@ TEST(RodDynamics, ExternalForceSign) {
   EXPECT_NEAR(momentum.y(), -1e-3 * h, 1e-9 * 1e-3 * h);
   EXPECT_GT(s.velocity(5).x(), 0.0);
   EXPECT_LT(s.velocity(5).y(), 0.0);
-  // The controller's forces (ControlForceModule is added by whoever builds actuation) follow
-  // the same convention; a moment turns the rod counter-clockwise.
 }
 
 // A node with prescribed motion follows it exactly; the rest of the rod is dragged along.

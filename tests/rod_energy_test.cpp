@@ -1,6 +1,6 @@
 // The elastic element energies (sim/rod/elastic_energy.h): analytic gradient and Hessian against
 // central finite differences, Hessian symmetry, invariance under rigid motion, and the course
-// values of refs REFERENCES.md section 6.
+// values of docs/references.md section 6.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -123,7 +123,7 @@ TEST(ElasticEnergy, InvariantUnderRigidMotion) {
   EXPECT_NEAR((b0.hessian * ty).norm(), 0.0, 1e-10);
 }
 
-// refs REFERENCES.md section 6 (UCLA MAE 263F course values).
+// docs/references.md section 6 (UCLA MAE 263F course values).
 TEST(ElasticEnergy, MatchesCourseUnitVectors) {
   const Vec<6> q(0.0062, -0.0420, 0.0500, -0.0661, 0.0938, -0.0420);
   const BendElement b = bend_energy(q.segment<2>(0), q.segment<2>(2), q.segment<2>(4), 7.8540e-4, 0.05, 0.0);

@@ -1,5 +1,5 @@
 // Static validation of the rod (sim/step/statics.h) against closed forms and tables the code did
-// not produce: refs REFERENCES.md sections 1 (elastica, small deflection, self-weight),
+// not produce: docs/references.md sections 1 (elastica, small deflection, self-weight),
 // 3 (Euler buckling) and 8 (tip moment), and the spatial convergence order (section 0).
 #include <gtest/gtest.h>
 
@@ -37,7 +37,7 @@ Tip solve_with_tip_load(Scene scene, const Vec2& force, double moment = 0.0) {
   return {state.position(n - 1), std::atan2(e.y(), e.x())};
 }
 
-// refs section 1, large deflection (Bisshopp & Drucker; Mattiasson): N = 41, centred clamp.
+// docs/references.md section 1, large deflection (Bisshopp & Drucker; Mattiasson): N = 41, centred clamp.
 TEST(RodStatics, CantileverTipLoadMatchesElasticaTable) {
   struct Row { double alpha, deflection, shortening, rotation_deg; };
   const Row table[] = {{0.5, 0.16214358, 0.01591896, 14.011},
@@ -55,7 +55,7 @@ TEST(RodStatics, CantileverTipLoadMatchesElasticaTable) {
   }
 }
 
-// refs section 1, small deflection: P L^3 / (3 EI), rotation P L^2 / (2 EI) at alpha = 0.01.
+// docs/references.md section 1, small deflection: P L^3 / (3 EI), rotation P L^2 / (2 EI) at alpha = 0.01.
 TEST(RodStatics, SmallDeflectionMatchesEulerBernoulli) {
   const Scene scene = cantilever(41);
   const double ei = bending_stiffness(scene.rod), l = scene.rod.length;
@@ -65,7 +65,7 @@ TEST(RodStatics, SmallDeflectionMatchesEulerBernoulli) {
   EXPECT_NEAR(-tip.angle, p * l * l / (2 * ei), 1e-3 * p * l * l / (2 * ei));
 }
 
-// refs section 1, self-weight: q L^4 / (8 EI) for q L^3 / EI <= 0.1.
+// docs/references.md section 1, self-weight: q L^4 / (8 EI) for q L^3 / EI <= 0.1.
 TEST(RodStatics, SelfWeightMatchesEulerBernoulli) {
   Scene scene = cantilever(41);
   const double ei = bending_stiffness(scene.rod), l = scene.rod.length;
@@ -80,7 +80,7 @@ TEST(RodStatics, SelfWeightMatchesEulerBernoulli) {
   EXPECT_NEAR(-tip.position.y(), expected, 2e-3 * expected);
 }
 
-// refs section 8: a dead tip moment bends the cantilever into a circular arc, phi = M L / EI.
+// docs/references.md section 8: a dead tip moment bends the cantilever into a circular arc, phi = M L / EI.
 TEST(RodStatics, TipMomentGivesCircularArc) {
   const Scene scene = cantilever(41);
   const double ei = bending_stiffness(scene.rod), l = scene.rod.length;
@@ -90,7 +90,7 @@ TEST(RodStatics, TipMomentGivesCircularArc) {
   EXPECT_NEAR(tip.position.y(), l * (1 - std::cos(phi)) / phi, 1e-3 * l);
 }
 
-// refs section 0: with the centred clamp, the tip deflection error falls as dl^2.
+// docs/references.md section 0: with the centred clamp, the tip deflection error falls as dl^2.
 TEST(RodStatics, SpatialConvergenceIsSecondOrder) {
   const double exact = 0.30172077;  // alpha = 1, section 1 table
   double errors[3];
@@ -108,7 +108,7 @@ TEST(RodStatics, SpatialConvergenceIsSecondOrder) {
   EXPECT_NEAR(order_coarse, 2.0, 0.3);
 }
 
-// refs section 3, Euler buckling of a clamped-free column: P_cr = pi^2 EI / (4 L^2). The straight
+// docs/references.md section 3, Euler buckling of a clamped-free column: P_cr = pi^2 EI / (4 L^2). The straight
 // rod under axial compression P is an equilibrium; its stiffness matrix acquires a negative
 // eigenvalue (an LDL^T negative pivot, Sylvester's law of inertia) exactly when P > P_cr.
 TEST(RodStatics, BucklingLoadOfClampedFreeColumn) {

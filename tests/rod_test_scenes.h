@@ -6,7 +6,7 @@
 
 namespace vascsim::test {
 
-// A horizontal cantilever along +x from the origin, centred clamp (refs section 0), static mode.
+// A horizontal cantilever along +x from the origin, centred clamp (docs/references.md section 0), static mode.
 inline Scene cantilever(int nodes) {
   Scene s;
   s.has_maze = false;

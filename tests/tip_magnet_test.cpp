@@ -1,4 +1,4 @@
-// A tip magnet in a uniform field against the closed form of ../shared/refs/REFERENCES.md
+// A tip magnet in a uniform field against the closed form of docs/references.md
 // section 8: a cantilever whose tip dipole m lies along the tip tangent, in a field B at angle
 // psi to the undeformed axis, is an arc whose tip angle solves phi = beta sin(psi - phi),
 // beta = m B L / EI; for psi = 90 degrees and beta = 1, phi = 0.739085133 rad.
@@ -34,7 +34,7 @@ TEST(TipMagnet, CantileverTipAngleConvergesToTheArcSolution) {
   // The magnet sits on the last edge, whose direction is the tangent half an edge before the
   // tip, so the edge angle converges to phi at first order in dl; Richardson extrapolation of
   // two resolutions removes that term.
-  const double reference = 0.739085133;  // refs section 8
+  const double reference = 0.739085133;  // docs/references.md section 8
   const int coarse_nodes = 21, fine_nodes = 41;
   const double coarse = tip_angle_for_beta_one(coarse_nodes);
   const double fine = tip_angle_for_beta_one(fine_nodes);

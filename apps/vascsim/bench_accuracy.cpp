@@ -2,10 +2,10 @@
 // problems with known answers, over time step, node count, Newton tolerance and scheme.
 //   dynamic: the paper's rod as a cantilever (centred clamp) under a suddenly applied small tip
 //     load (alpha = P L^2/EI = 0.01, linear regime). Euler-Bernoulli modal superposition gives
-//     y_tip(t) = sum_n 4 P L^3 / (EI (beta_n L)^4) (1 - cos w_n t) (refs REFERENCES.md sections
+//     y_tip(t) = sum_n 4 P L^3 / (EI (beta_n L)^4) (1 - cos w_n t) (docs/references.md sections
 //     1 and 2; mode shapes normalised so that the integral of phi^2 is L and |phi(L)| = 2).
 //     Error: the largest |y_tip - exact| over t = 0.1, 0.2, .. T, relative to P L^3 / (3 EI).
-//   static: the elastica at alpha = 1 (refs section 1 table) against N.
+//   static: the elastica at alpha = 1 (docs/references.md section 1 table) against N.
 // Prints a table and the Pareto front (no faster run is more accurate), writes all rows as CSV.
 #include <algorithm>
 #include <chrono>

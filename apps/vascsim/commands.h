@@ -18,14 +18,14 @@ int run_maze_command(int argc, char** argv);
 int run_run_command(int argc, char** argv);
 int run_bench_command(int argc, char** argv);
 int run_bench_traversal(int argc, char** argv);
+int run_bench_speed(int argc, char** argv);
+int run_bench_accuracy(int argc, char** argv);
 #ifdef VASCSIM_HAVE_RENDER
 int run_render_command(int argc, char** argv);
 int run_diff_command(int argc, char** argv);
 int run_replay_command(int argc, char** argv);
 int run_bench_replay(int argc, char** argv);
 int run_bench_render(int argc, char** argv);
-int run_bench_speed(int argc, char** argv);
-int run_bench_accuracy(int argc, char** argv);
 #endif
 
 }  // namespace vascsim::cli

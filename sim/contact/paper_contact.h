@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sim/contact/contact_pairs.h"
+#include "sim/log/channel_names.h"
 #include "sim/step/controls.h"
 #include "sim/step/force_module.h"
 
@@ -19,7 +20,7 @@ namespace vascsim {
 class ExplicitWallForceModule : public ForceModule {
  public:
   explicit ExplicitWallForceModule(int nodes) : nodes_(nodes) {}
-  std::string channel() const override { return "force/contact"; }
+  std::string channel() const override { return channel::kContactForce; }
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
 
  private:

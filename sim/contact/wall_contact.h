@@ -6,6 +6,7 @@
 
 #include "sim/contact/contact_pairs.h"
 #include "sim/contact/contact_params.h"
+#include "sim/log/channel_names.h"
 #include "sim/step/force_module.h"
 
 namespace vascsim {
@@ -13,7 +14,7 @@ namespace vascsim {
 class WallContactModule : public ForceModule {
  public:
   WallContactModule(const std::vector<WallSegment>& walls, const RodModel& rod, const ContactParams& params);
-  std::string channel() const override { return "force/contact"; }
+  std::string channel() const override { return channel::kContactForce; }
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
   double max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const override;
   // The barrier energy at positions x (J): what add() differentiates.
@@ -37,7 +38,7 @@ class WallContactModule : public ForceModule {
 class WallFrictionModule : public ForceModule {
  public:
   WallFrictionModule(const std::vector<WallSegment>& walls, const RodModel& rod, const ContactParams& params);
-  std::string channel() const override { return "force/friction"; }
+  std::string channel() const override { return channel::kFrictionForce; }
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
 
  private:

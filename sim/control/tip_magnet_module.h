@@ -4,6 +4,7 @@
 #pragma once
 
 #include "sim/control/tip_magnet_energy.h"
+#include "sim/log/channel_names.h"
 #include "sim/step/force_module.h"
 
 namespace vascsim {
@@ -11,7 +12,7 @@ namespace vascsim {
 class TipMagnetModule : public ForceModule {
  public:
   TipMagnetModule(int nodes, double moment) : nodes_(nodes), moment_(moment) {}
-  std::string channel() const override { return "force/actuation"; }
+  std::string channel() const override { return channel::kActuationForce; }
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override {
     if (!ctx.controls || ctx.controls->field.isZero()) return;
     const int first = 2 * (nodes_ - 2);

@@ -5,6 +5,7 @@
 // Channel force/actuation.
 #pragma once
 
+#include "sim/log/channel_names.h"
 #include "sim/step/force_module.h"
 
 namespace vascsim {
@@ -12,7 +13,7 @@ namespace vascsim {
 class TipServoModule : public ForceModule {
  public:
   explicit TipServoModule(int nodes) : nodes_(nodes) {}
-  std::string channel() const override { return "force/actuation"; }
+  std::string channel() const override { return channel::kActuationForce; }
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
   static constexpr int kMaxActuatedNodes = 3;
 

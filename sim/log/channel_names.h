@@ -13,6 +13,7 @@ inline constexpr const char* kActuationForce = "force/actuation"; // node vector
 inline constexpr const char* kContactForce = "force/contact";     // node vectors, N (wall normal force)
 inline constexpr const char* kFrictionForce = "force/friction";   // node vectors, N
 inline constexpr const char* kDragForce = "force/drag";           // node vectors, N
+inline constexpr const char* kDampingForce = "force/damping";     // node vectors, N (viscous damping)
 inline constexpr const char* kExternalForce = "force/external";   // node vectors, N (point loads, gravity)
 inline constexpr const char* kTipReference = "tip/reference";     // vector, m (controller's target)
 inline constexpr const char* kTipError = "tip/error";             // scalar, m (|tip - reference|)

@@ -1,5 +1,5 @@
 // The two elastic element energies of the planar Discrete Elastic Rod (Jawed's course notes;
-// refs REFERENCES.md preamble), as pure functions returning energy, gradient and Hessian of one
+// docs/references.md preamble), as pure functions returning energy, gradient and Hessian of one
 // element. Inline because the assembler calls them once per node per Newton iteration.
 #pragma once
 

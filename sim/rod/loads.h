@@ -1,12 +1,13 @@
 // The load modules a scene can switch on (LoadSpec), each a ForceModule in its own file:
-// gravity, point forces and moments, viscous damping, quadratic fluid drag, and the controller's
-// node forces. Signs: each adds the force acting ON the rod; the stepper's residual is
-// M a - F, so a force along +x accelerates the rod along +x (tested in loads_test.cpp; the
-// paper's code and dismech-rods had this backwards).
+// gravity, point forces and moments, viscous damping and quadratic fluid drag. Signs: each adds
+// the force acting ON the rod; the stepper's residual is M a - F, so a force along +x
+// accelerates the rod along +x (tested in rod_dynamics_test.cpp, RodDynamics.ExternalForceSign;
+// the paper's code and dismech-rods had this backwards).
 #pragma once
 
 #include <vector>
 
+#include "sim/log/channel_names.h"
 #include "sim/rod/rod_model.h"
 #include "sim/step/force_module.h"
 
@@ -45,14 +46,14 @@ class PointLoadModule : public ForceModule {
 class ViscousDampingModule : public ForceModule {
  public:
   ViscousDampingModule(const RodModel& rod, double coefficient) : c_(coefficient * rod.voronoi) {}
-  std::string channel() const override { return "force/damping"; }
+  std::string channel() const override { return channel::kDampingForce; }
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
 
  private:
   Eigen::VectorXd c_;  // (N), N s/m
 };
 
-// Quadratic drag (paper II.C, refs section 4), c = 1/2 rho Cd A:
+// Quadratic drag (paper II.C, docs/references.md section 4), c = 1/2 rho Cd A:
 //  - tip (the paper): the tip node only, isotropic, f = -c |v| v, -df/dv = c (|v| I + v v^T / |v|);
 //  - nodes (paper V.A's refinement: a rod meets more resistance moving sideways than along
 //    itself): every node, the cross-flow principle with separate normal and tangential
@@ -78,18 +79,6 @@ class QuadraticDragModule : public ForceModule {
   bool cross_flow_ = false;
   Eigen::VectorXd c_;             // (N), kg/m
   Eigen::VectorXd c_tangential_;  // (N), kg/m
-};
-
-// The controller's node forces (Controls::forces), e.g. the magnetic tip force of issue 4.
-// Channel force/actuation.
-class ControlForceModule : public ForceModule {
- public:
-  explicit ControlForceModule(int nodes) : nodes_(nodes) {}
-  std::string channel() const override;
-  void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
-
- private:
-  int nodes_;
 };
 
 }  // namespace vascsim

@@ -31,7 +31,7 @@ struct RodModel {
 Eigen::VectorXd arc_positions(int nodes, double dl, const Vec2& first, double direction, double curvature);
 
 // Compiles the rod. With a centred clamp the first edge straddles shape.start and the tip lies at
-// `length` from it along the rod (refs section 0), so dl = L/(N-1.5); otherwise dl = L/(N-1).
+// `length` from it along the rod (docs/references.md section 0), so dl = L/(N-1.5); otherwise dl = L/(N-1).
 RodModel build_rod_model(const RodSpec& rod, const ShapeSpec& shape, ClampKind clamp);
 
 }  // namespace vascsim

@@ -65,7 +65,7 @@ struct ShapeSpec {
 // tip (-1 is the tip node).
 enum class ClampKind {
   kNone,
-  kFirstEdge,  // nodes 0 and 1 fixed, node 0 at the root (first-order accurate, refs section 0)
+  kFirstEdge,  // nodes 0 and 1 fixed, node 0 at the root (first-order accurate, docs/references.md section 0)
   kCentred,    // nodes 0 and 1 fixed at -dl/2 and +dl/2 about the root; edge dl = L/(N-1.5)
 };
 // x(t) = x(0) + velocity t + amplitude sin(2 pi frequency t): a node driven kinematically.
@@ -163,7 +163,7 @@ enum class ActuationMode {
   kField,      // a tip magnet in a uniform field: the field turns the tip (torque m x B), its gradient pulls
 };
 enum class DisturbanceKind { kForce, kPosition };
-// d(t) = amplitude sin(omega t) along `direction` (paper: "2 sin(5 t)"; see docs/control.md).
+// d(t) = amplitude sin(omega t) along `direction` (paper: "2 sin(5 t)"; see docs/navigation.md).
 struct DisturbanceSpec {
   DisturbanceKind kind = DisturbanceKind::kForce;
   double amplitude = 2e-3;                         // N (force) or m (position); 0 switches it off

@@ -1,6 +1,5 @@
 // Controls: the inputs a controller sets BEFORE each step (STYLE.md example 10), held constant
 // over the step. The stepper reads them; a controller can be tested without a stepper.
-//   - forces act on nodes through ControlForceModule (log channel force/actuation);
 //   - targets move nodes kinematically: x(t) = position + velocity (t - time) during the step,
 //     so an adaptive retry with a shorter dt stays on the commanded motion.
 #pragma once
@@ -39,7 +38,6 @@ struct TipServo {
 
 struct Controls {
   double time = 0.0;  // s, time at which `targets` positions hold (usually State::t)
-  std::vector<NodeForce> forces;
   std::vector<NodeTarget> targets;
   TipServo servo;
   // Wall contact forces decided outside Newton (the paper's iterative penalty contact mode).
