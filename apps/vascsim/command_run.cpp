@@ -9,6 +9,7 @@
 #include "apps/vascsim/commands.h"
 #include "sim/io/log_metadata.h"
 #include "sim/io/output_file.h"
+#include "sim/io/provenance.h"
 #include "sim/io/run_summary.h"
 #include "sim/io/scene_reader.h"
 #include "sim/run/run.h"
@@ -82,6 +83,10 @@ LogMetadata metadata_for(const Scene& scene, const Run& run) {
   LogMetadata m;
   m.title = scene.name;
   m.scene_json = scene_to_json(scene);
+  const Provenance provenance = provenance_of(m.scene_json);
+  m.vascsim_version = provenance.version;
+  m.commit = provenance.commit;
+  m.scene_hash = provenance.scene_hash;
   m.rod_outer_radius = scene.rod.outer_radius;
   m.rod_length = scene.rod.length;
   m.output_interval = scene.run.output_interval;

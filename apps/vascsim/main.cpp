@@ -8,6 +8,7 @@
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
+#include "sim/io/provenance.h"
 #include "sim/scene/input_error.h"
 
 namespace {
@@ -15,7 +16,8 @@ namespace {
 void print_help() {
   std::printf(
       "vascsim: simulate a magnetically steered soft robot in a 2D vascular network, and render it.\n\n"
-      "usage: vascsim <command> [options]   (vascsim <command> --help for its options)\n\n"
+      "usage: vascsim <command> [options]   (vascsim <command> --help for its options)\n"
+      "       vascsim --version\n\n"
       "commands:\n");
   for (const auto& c : vascsim::cli::commands()) std::printf("  %-10s %s\n", c.name, c.summary);
 }
@@ -23,6 +25,10 @@ void print_help() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 2 && !std::strcmp(argv[1], "--version")) {
+    std::printf("%s\n", vascsim::version_line().c_str());
+    return 0;
+  }
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
     print_help();
     return argc < 2 ? 2 : 0;

@@ -42,6 +42,7 @@ std::string write_log_metadata(const LogMetadata& m) {
   j["goal"] = point(m.goal);
   j["rod"] = {{"outer_radius", m.rod_outer_radius}, {"length", m.rod_length}};
   j["output_interval"] = m.output_interval;
+  j["provenance"] = {{"vascsim_version", m.vascsim_version}, {"commit", m.commit}, {"scene_hash", m.scene_hash}};
   return j.dump();
 }
 
@@ -80,6 +81,12 @@ LogMetadata read_log_metadata(const std::string& text, const std::string& label)
   m.rod_length = rod.number("length", 0.0, 0.0, 1e6);
   rod.finish();
   m.output_interval = in.number("output_interval", 0.0, 0.0, 1e9);
+  if (const json* p = in.raw("provenance"); p && p->is_object()) {
+    auto text = [&](const char* key) { return p->contains(key) && (*p)[key].is_string() ? (*p)[key].get<std::string>() : ""; };
+    m.vascsim_version = text("vascsim_version");
+    m.commit = text("commit");
+    m.scene_hash = text("scene_hash");
+  }
   // Newer writers may add keys; an older reader ignores them rather than refusing the log.
   return m;
 }

@@ -23,6 +23,8 @@ struct LogMetadata {
   double rod_outer_radius = 0.0;    // m
   double rod_length = 0.0;          // m
   double output_interval = 0.0;     // s, nominal time between frames
+  // Provenance (sim/io/provenance.h): empty in logs written before it was recorded.
+  std::string vascsim_version, commit, scene_hash;
 };
 
 std::string write_log_metadata(const LogMetadata& metadata);

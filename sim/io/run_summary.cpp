@@ -3,6 +3,9 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "sim/io/provenance.h"
+#include "sim/io/scene_reader.h"
+
 namespace vascsim {
 
 using nlohmann::json;
@@ -19,6 +22,8 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   json j;
   j["format"] = "vascsim-summary/1";
   j["scene"] = scene.name;
+  const Provenance p = provenance_of(scene_to_json(scene));
+  j["provenance"] = {{"vascsim_version", p.version}, {"commit", p.commit}, {"scene_hash", p.scene_hash}};
   j["ok"] = !s.failed;
   j["failure"] = s.failed ? json(s.failure) : json(nullptr);
   const bool is_static = scene.solver.mode == SolveMode::kStatic;

@@ -1,0 +1,62 @@
+// Provenance: `vascsim --version` names the version and the commit of the build, and every
+// summary.json and frame log metadata carry the same version and commit with the hash of the
+// canonical scene they ran, so a result traces back to its code and input.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/io/log_metadata.h"
+#include "sim/io/provenance.h"
+#include "sim/log/frame_log.h"
+#include "tests/cli_test_support.h"
+
+namespace vascsim::test {
+namespace {
+
+// FNV-1a 64-bit test vectors from the algorithm's authors (Fowler, Noll, Vo; IETF draft
+// draft-eastlake-fnv, appendix C): "" and "a" and "foobar".
+TEST(Provenance, SceneHashIsFnv1a64) {
+  EXPECT_EQ(scene_hash(""), "cbf29ce484222325");
+  EXPECT_EQ(scene_hash("a"), "af63dc4c8601ec8c");
+  EXPECT_EQ(scene_hash("foobar"), "85944171f73967e8");
+}
+
+TEST(Provenance, VersionSummaryAndLogAgree) {
+  const CommandResult version = run_vascsim("--version");
+  ASSERT_EQ(version.exit_code, 0) << version.output;
+  std::smatch m;
+  const std::string line = version.output.substr(0, version.output.find('\n'));
+  ASSERT_TRUE(std::regex_match(line, m, std::regex(R"(vascsim (\d+\.\d+\.\d+) \(commit ([0-9a-z.-]+)\))"))) << line;
+  const std::string number = m[1], commit = m[2];
+
+  const std::string dir = fresh_temp_dir("provenance");
+  const char* scene = R"({"name": "short", "maze": {"seed": 4}, "rod": {"nodes": 12},
+                          "path": {"speed": 0.2}, "run": {"duration": 0.2, "output_interval": 0.1}})";
+  write_text(dir + "/scene.json", scene);
+  for (const char* out : {"/a", "/b"})
+    ASSERT_EQ(run_vascsim("run " + dir + "/scene.json --out " + dir + out + " --quiet").exit_code, 0);
+  write_text(dir + "/other.json", std::string(scene).replace(std::string(scene).find("\"seed\": 4"), 9, "\"seed\": 5"));
+  ASSERT_EQ(run_vascsim("run " + dir + "/other.json --out " + dir + "/c --quiet").exit_code, 0);
+
+  auto summary = [&](const char* run) { return nlohmann::json::parse(read_text(dir + run + "/summary.json"))["provenance"]; };
+  const auto a = summary("/a");
+  EXPECT_EQ(a["vascsim_version"], number);
+  EXPECT_EQ(a["commit"], commit);
+  ASSERT_TRUE(a["scene_hash"].is_string());
+  EXPECT_EQ(a["scene_hash"].get<std::string>().size(), 16u);
+  EXPECT_EQ(summary("/b")["scene_hash"], a["scene_hash"]) << "the same scene hashed differently";
+  EXPECT_NE(summary("/c")["scene_hash"], a["scene_hash"]) << "another maze seed hashed the same";
+
+  const FrameLogReader log(dir + "/a/frames.vlog");
+  const LogMetadata meta = read_log_metadata(log.header().metadata, "a");
+  EXPECT_EQ(meta.vascsim_version, number);
+  EXPECT_EQ(meta.commit, commit);
+  EXPECT_EQ(meta.scene_hash, a["scene_hash"].get<std::string>());
+  EXPECT_EQ(meta.scene_hash, scene_hash(meta.scene_json))
+      << "the hash is not that of the canonical scene the log carries";
+}
+
+}  // namespace
+}  // namespace vascsim::test
