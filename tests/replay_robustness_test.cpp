@@ -137,7 +137,9 @@ TEST(ReplayRobustness, SurvivesMalformedHttpAndHangUps) {
   for (const auto& bytes : junk) {
     const std::string reply = raw_exchange(port, bytes);
     // An answer, if any, refuses the request; it never serves the run.
-    if (!reply.empty()) EXPECT_EQ(reply.rfind("HTTP/1.1 4", 0), 0u) << reply.substr(0, 200);
+    if (!reply.empty()) {
+      EXPECT_EQ(reply.rfind("HTTP/1.1 4", 0), 0u) << reply.substr(0, 200);
+    }
     expect_healthy(s, "malformed request of " + std::to_string(bytes.size()) + " bytes");
   }
   // A client that asks for a frame and hangs up before the answer.
