@@ -10,6 +10,8 @@
 
 #include "sim/io/maze_json.h"
 #include "sim/io/scene_reader.h"
+#include "sim/run/compile.h"
+#include "sim/run/navigation.h"
 #include "sim/run/run.h"
 
 namespace vascsim {
@@ -43,12 +45,11 @@ Scene fast_scene(std::uint64_t seed, ActuationMode actuation, ContactMode contac
 }
 
 RunStatistics run_scene(Scene scene, double extra_time = 2.0) {
-  auto nav = prepare_navigation(scene);
-  scene.run.duration = nav->trajectory->duration() + extra_time;
+  // The run's length follows its compiled trajectory.
+  scene.run.duration = compile(scene)->navigation->trajectory->duration() + extra_time;
+  scene.run.duration_from_path = false;
   scene.run.output_interval = 0.1;
-  Model model = build_model(scene);
-  add_navigation_modules(scene, *nav, model);
-  vascsim::Run run(scene, std::move(model), std::move(nav));
+  vascsim::Run run(compile(scene));
   NullSink sink;
   run.run(sink);
   EXPECT_TRUE(run.state().x.allFinite());
@@ -99,11 +100,9 @@ INSTANTIATE_TEST_SUITE_P(AllModes, Traversal,
 class ShippedScene : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ShippedScene, ReachesItsGoal) {
-  Scene scene = read_scene_file(std::string(VASCSIM_SOURCE_DIR) + "/scenes/" + GetParam() + ".json");
-  auto nav = prepare_navigation(scene);
-  Model model = build_model(scene);
-  add_navigation_modules(scene, *nav, model);
-  vascsim::Run run(scene, std::move(model), std::move(nav));
+  const Scene input = read_scene_file(std::string(VASCSIM_SOURCE_DIR) + "/scenes/" + GetParam() + ".json");
+  vascsim::Run run(compile(input));
+  const Scene& scene = run.scene();
   NullSink sink;
   run.run(sink);
   const RunStatistics& s = run.statistics();
@@ -117,19 +116,20 @@ TEST_P(ShippedScene, ReachesItsGoal) {
 // A maze scene that names no duration runs until the reference reaches the goal plus the
 // settling time; a named one, or a scene without a maze, keeps its own.
 TEST(Navigation, MazeSceneWithoutDurationRunsToTheGoal) {
-  Scene implicit = read_scene_text(R"({"maze": {"seed": 4}})", "implicit.json");
-  const auto nav = prepare_navigation(implicit);
-  EXPECT_NEAR(implicit.run.duration, nav->trajectory->duration() + 2.0, 1e-12);
+  const Scene input = read_scene_text(R"({"maze": {"seed": 4}})", "implicit.json");
+  const auto compiled = compile(input);
+  const Scene& implicit = compiled->scene;
+  EXPECT_NEAR(implicit.run.duration, compiled->navigation->trajectory->duration() + 2.0, 1e-12);
   EXPECT_GT(implicit.run.duration, 10.0) << "longer than the free-space default";
+  EXPECT_TRUE(input.run.duration_from_path) << "compile changed its input scene";
   // `vascsim maze` writes the scene with the duration a run would use (shortest round-trip
   // digits, as the JSON writer prints doubles).
   char digits[32];
   const auto end = std::to_chars(digits, digits + sizeof digits, implicit.run.duration).ptr;
   const std::string document = maze_document(read_scene_text(R"({"maze": {"seed": 4}})", "implicit.json"));
   EXPECT_NE(document.find("\"duration\": " + std::string(digits, end)), std::string::npos);
-  Scene named = read_scene_text(R"({"maze": {"seed": 4}, "run": {"duration": 5}})", "named.json");
-  prepare_navigation(named);
-  EXPECT_EQ(named.run.duration, 5.0);
+  const Scene named = read_scene_text(R"({"maze": {"seed": 4}, "run": {"duration": 5}})", "named.json");
+  EXPECT_EQ(compile(named)->scene.run.duration, 5.0);
   EXPECT_EQ(read_scene_text(R"({"maze": null})", "free.json").run.duration, 10.0);
 }
 
@@ -157,12 +157,10 @@ TEST(Navigation, TimeStepsFromTenthOfMillisecondToTenMilliseconds) {
   for (double dt : {1e-4, 1e-3, 1e-2}) {
     Scene s = fast_scene(2, ActuationMode::kForce, ContactMode::kImplicit);
     s.solver.dt = dt;
-    auto nav = prepare_navigation(s);
     s.run.duration = dt < 1e-3 ? 0.5 : 4.0;
+    s.run.duration_from_path = false;
     s.run.output_interval = std::max(dt, 0.05);
-    Model model = build_model(s);
-    add_navigation_modules(s, *nav, model);
-    vascsim::Run run(s, std::move(model), std::move(nav));
+    vascsim::Run run(compile(s));
     NullSink sink;
     const bool ok = run.run(sink);
     EXPECT_TRUE(ok || !run.statistics().failure.empty()) << "dt " << dt;

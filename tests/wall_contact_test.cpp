@@ -54,16 +54,17 @@ TEST(WallContact, ForceIsMinusEnergyGradientForNodesAndCorners) {
   EXPECT_GT(f[1], 0.0);
 }
 
-// The neighbour lists a ContactGeometry keeps between calls must never hide a pair: a rod
-// wandering through a thick-walled maze, in small and large moves, sees exactly the pairs and
-// the step cap that a fresh geometry (empty lists) finds at every position.
+// Neighbour lists kept between calls must never hide a pair: a rod wandering through a
+// thick-walled maze, in small and large moves, sees exactly the pairs and the step cap that
+// fresh (empty) lists find at every position.
 TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
   std::vector<WallSegment> walls = {{Vec2(0, 0), Vec2(0.2, 0), 0.02}, {Vec2(0.2, 0), Vec2(0.2, 0.2), 0.02},
                                     {Vec2(0.1, 0.05), Vec2(0.1, 0.15), 0.02}, {Vec2(0, 0.2), Vec2(0.2, 0.2), 0.0}};
   for (int i = 1; i < 8; ++i)  // round pillars: corners that only edges touch
     for (int j = 1; j < 8; ++j) walls.push_back({Vec2(0.025 * i, 0.025 * j), Vec2(0.025 * i, 0.025 * j), 0.006});
   const double radius = 0.002, reach = 0.001, edge = 0.01;
-  const ContactGeometry reused(walls, radius, reach, edge);
+  const ContactGeometry geometry(walls, radius, reach, edge);
+  ContactNeighbours reused;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0), jiggle(-1.0, 1.0);
   const int nodes = 8;
@@ -83,9 +84,9 @@ TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
     for (int i = 0; i < nodes; ++i) shape.segment<2>(2 * i) += drift;
     for (int i = 0; i < 2 * nodes; ++i) x[i] = shape[i] + 2e-4 * jiggle(rng);
     std::vector<std::tuple<int, bool, double>> got, want;
-    reused.for_each_pair(x, false, [&](const ContactPair& p) { got.emplace_back(p.first_dof, p.is_edge, p.gap); });
-    ContactGeometry(walls, radius, reach, edge)
-        .for_each_pair(x, false, [&](const ContactPair& p) { want.emplace_back(p.first_dof, p.is_edge, p.gap); });
+    geometry.for_each_pair(x, false, [&](const ContactPair& p) { got.emplace_back(p.first_dof, p.is_edge, p.gap); }, reused);
+    ContactNeighbours fresh;
+    geometry.for_each_pair(x, false, [&](const ContactPair& p) { want.emplace_back(p.first_dof, p.is_edge, p.gap); }, fresh);
     std::sort(got.begin(), got.end());
     std::sort(want.begin(), want.end());
     ASSERT_EQ(got, want) << "trial " << trial;
@@ -93,7 +94,8 @@ TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
     Eigen::VectorXd dx(2 * nodes);
     const double move = trial % 3 == 0 ? 3e-3 : 1.7e-3;  // m, beyond and up to the lists' margin
     for (int i = 0; i < 2 * nodes; ++i) dx[i] = move * jiggle(rng);
-    ASSERT_EQ(reused.max_step_fraction(x, dx, 0.5), ContactGeometry(walls, radius, reach, edge).max_step_fraction(x, dx, 0.5))
+    ContactNeighbours fresh_for_step;
+    ASSERT_EQ(geometry.max_step_fraction(x, dx, 0.5, reused), geometry.max_step_fraction(x, dx, 0.5, fresh_for_step))
         << "trial " << trial;
     pairs_seen += static_cast<int>(want.size());
     for (const auto& pair : want) edge_pairs_seen += std::get<1>(pair);
@@ -110,8 +112,9 @@ TEST(WallContact, EdgeStretchedBeyondTheDeclaredLengthStillMeetsCorners) {
   Eigen::VectorXd x(4);
   x << 0.0, 0.0055, 0.5, 0.0055;  // one 0.5 m edge, 5.5 mm above the pillar's centre
   std::vector<std::pair<bool, double>> pairs;
+  ContactNeighbours neighbours;
   ContactGeometry(pillar, radius, reach, declared_edge)
-      .for_each_pair(x, false, [&](const ContactPair& p) { pairs.emplace_back(p.is_edge, p.gap); });
+      .for_each_pair(x, false, [&](const ContactPair& p) { pairs.emplace_back(p.is_edge, p.gap); }, neighbours);
   ASSERT_EQ(pairs.size(), 1u);
   EXPECT_TRUE(pairs[0].first);
   EXPECT_NEAR(pairs[0].second, 0.0055 - 0.003 - radius, 1e-15);

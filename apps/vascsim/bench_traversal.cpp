@@ -6,6 +6,7 @@
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
 #include "sim/io/scene_reader.h"
+#include "sim/run/compile.h"
 #include "sim/run/run.h"
 
 namespace vascsim::cli {
@@ -45,11 +46,7 @@ int run_bench_traversal(int argc, char** argv) {
     double best = 1e300;
     RunStatistics stats;
     for (int k = 0; k < repeat; ++k) {
-      Scene s = scene;
-      auto nav = prepare_navigation(s);
-      Model model = build_model(s);
-      add_navigation_modules(s, *nav, model);
-      Run run(s, std::move(model), std::move(nav));
+      Run run(compile(scene));
       DiscardSink sink;
       run.run(sink);
       if (run.statistics().wall_time < best) {

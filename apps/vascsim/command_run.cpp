@@ -12,6 +12,7 @@
 #include "sim/io/provenance.h"
 #include "sim/io/run_summary.h"
 #include "sim/io/scene_reader.h"
+#include "sim/run/compile.h"
 #include "sim/run/run.h"
 #include "sim/scene/input_error.h"
 #ifdef VASCSIM_HAVE_RENDER
@@ -123,11 +124,14 @@ int run_run_command(int argc, char** argv) {
   const auto out = args.value("out");
   if (!out) throw UsageError("--out DIR is required");
 
-  Scene scene = read_scene_file(args.positional().front());
+  Scene input = read_scene_file(args.positional().front());
   if (args.value("duration")) {
-    scene.run.duration = args.number("duration", scene.run.duration, 1e-9, 1e7);
-    scene.run.duration_from_path = false;
+    input.run.duration = args.number("duration", input.run.duration, 1e-9, 1e7);
+    input.run.duration_from_path = false;
   }
+  // Compiled before any output exists: a scene that cannot run leaves nothing behind.
+  Run run(compile(input));
+  const Scene& scene = run.scene();  // as resolved: the duration a maze scene runs, the rod at the entry
 
   // Refuse to mix a new run into a directory holding someone's files.
   std::error_code ec;
@@ -138,12 +142,6 @@ int run_run_command(int argc, char** argv) {
   } else if (!fs::create_directories(*out, ec)) {
     throw InputError(*out + ": cannot create directory (" + ec.message() + ")");
   }
-
-  std::unique_ptr<Navigation> navigation;
-  if (scene.has_maze) navigation = prepare_navigation(scene);
-  Model model = build_model(scene);
-  if (navigation) add_navigation_modules(scene, *navigation, model);
-  Run run(scene, std::move(model), std::move(navigation));
 
   FrameLogHeader header;
   header.node_count = static_cast<std::uint32_t>(scene.rod.nodes);

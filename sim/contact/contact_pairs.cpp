@@ -36,8 +36,7 @@ ContactGeometry::ContactGeometry(const std::vector<WallSegment>& walls, double r
       wall_field_(walls, 4.0 * (rod_radius + reach) + max_edge_length),
       corner_field_(corners_, 4.0 * (rod_radius + reach) + max_edge_length) {}
 
-void ContactGeometry::refresh_neighbours(const Eigen::VectorXd& x) const {
-  NeighbourCache& c = cache_;
+void ContactGeometry::refresh_neighbours(const Eigen::VectorXd& x, ContactNeighbours& c) const {
   const int nodes = static_cast<int>(x.size() / 2);
   if (c.anchor.size() == x.size()) {
     bool moved = false;
@@ -68,10 +67,10 @@ void ContactGeometry::refresh_neighbours(const Eigen::VectorXd& x) const {
 }
 
 void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
-                                    const std::function<void(const ContactPair&)>& visit, bool nodes_only) const {
+                                    const std::function<void(const ContactPair&)>& visit, ContactNeighbours& c,
+                                    bool nodes_only) const {
   const int nodes = static_cast<int>(x.size() / 2);
-  refresh_neighbours(x);
-  const NeighbourCache& c = cache_;
+  refresh_neighbours(x, c);
   ContactPair pair;
   for (int i = 0; i < nodes; ++i) {
     const Vec2 p = x.segment<2>(2 * i);
@@ -131,7 +130,8 @@ double ContactGeometry::min_gap(const Eigen::VectorXd& x, double search) const {
   return gap;
 }
 
-double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx, double safety) const {
+double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx, double safety,
+                                          ContactNeighbours& c) const {
   const int nodes = static_cast<int>(x.size() / 2);
   // Limit the move so that every wall it could reach is inside the query radius.
   const double reach_limit = 0.5 * wall_field_.max_query_radius() - rod_radius_;
@@ -142,8 +142,7 @@ double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen:
   }
   // Moves within the neighbour lists' margin (the usual Newton update) need no grid search: x is
   // within skin/2 of the anchor, so every wall within move + r of a node is on its list.
-  refresh_neighbours(x);
-  const NeighbourCache& c = cache_;
+  refresh_neighbours(x, c);
   const double listed_move = reach_ + 0.5 * skin_;
   std::vector<WallHit> hits;
   WallHit hit;

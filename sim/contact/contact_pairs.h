@@ -24,6 +24,20 @@ struct ContactPair {
   Eigen::Vector2d normal = Eigen::Vector2d::UnitX();  // unit, from the wall towards the rod
 };
 
+// Verlet neighbour lists for one user of a ContactGeometry: the walls near each node and the
+// corners near each edge, found in the grids for an anchor configuration with a margin (the
+// skin), and reused until some node has moved skin/2 from the anchor. A step moves the rod far
+// less than that, so the Newton iterations of many steps share one grid search. Per-run state
+// (a module keeps its lists in its Workspace cache), so the geometry itself stays const and
+// shareable.
+struct ContactNeighbours {
+  Eigen::VectorXd anchor;                     // m, positions the lists were built for
+  std::vector<int> node_begin, node_walls;    // CSR: walls near node i
+  std::vector<int> edge_begin, edge_corners;  // CSR: corners near edge i
+};
+
+// The walls and their corners, with grids for distance queries: immutable after construction,
+// built once per run and shared by contact, friction and the run's gap statistics.
 class ContactGeometry {
  public:
   // walls: the environment; rod_radius, reach: pairs are reported while gap < reach (m).
@@ -32,28 +46,20 @@ class ContactGeometry {
   // Calls `visit` for every pair with gap < reach at positions x (2N). With `with_hessian` false
   // the pair's Hessian is not computed.
   // `nodes_only` skips the corner-edge pairs (friction acts on node pairs only).
+  // `neighbours` are the caller's lists, refreshed here when x has moved too far from them.
   void for_each_pair(const Eigen::VectorXd& x, bool with_hessian, const std::function<void(const ContactPair&)>& visit,
-                     bool nodes_only = false) const;
+                     ContactNeighbours& neighbours, bool nodes_only = false) const;
   // The smallest gap of any node or edge against any wall within `search` (m) of it, or +inf.
   double min_gap(const Eigen::VectorXd& x, double search) const;
   // Largest fraction of the move x -> x + dx that keeps every gap positive, shrunk by `safety`
   // (conservative: a distance changes no faster than the points that define it move).
-  double max_step_fraction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx, double safety) const;
+  double max_step_fraction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx, double safety,
+                           ContactNeighbours& neighbours) const;
 
   double rod_radius() const { return rod_radius_; }
 
  private:
-  // Verlet neighbour lists: the walls near each node and the corners near each edge, found in
-  // the grids for an anchor configuration with a margin `skin_`, and reused until some node has
-  // moved skin/2 from the anchor. A step moves the rod far less than that, so the Newton
-  // iterations of many steps share one grid search. Mutable cache: one instance must not be
-  // shared between threads (each run builds its own).
-  struct NeighbourCache {
-    Eigen::VectorXd anchor;               // m, positions the lists were built for
-    std::vector<int> node_begin, node_walls;    // CSR: walls near node i
-    std::vector<int> edge_begin, edge_corners;  // CSR: corners near edge i
-  };
-  void refresh_neighbours(const Eigen::VectorXd& x) const;
+  void refresh_neighbours(const Eigen::VectorXd& x, ContactNeighbours& c) const;
   // Corners (indices into corners_) whose capsule may lie within `margin` (m) of edge ab: a
   // superset, from the corner grid around the midpoint.
   void edge_corner_candidates(const Vec2& a, const Vec2& b, double margin, std::vector<int>& found) const;
@@ -64,7 +70,6 @@ class ContactGeometry {
   double reach_;
   double max_edge_length_;
   double skin_;  // m, neighbour-list margin
-  mutable NeighbourCache cache_;
   WallDistanceField wall_field_;
   WallDistanceField corner_field_;
 };

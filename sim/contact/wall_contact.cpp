@@ -23,14 +23,32 @@ double max_edge_length(const RodModel& rod) { return rod.rest_length.size() ? ro
 
 }  // namespace
 
-WallContactModule::WallContactModule(const std::vector<WallSegment>& walls, const RodModel& rod,
-                                     const ContactParams& params)
-    : params_(params), geometry_(walls, params.rod_radius, params.g_hat, 2.0 * max_edge_length(rod)) {}
+std::shared_ptr<const ContactGeometry> make_contact_geometry(const std::vector<WallSegment>& walls, const RodModel& rod,
+                                                             const ContactParams& params) {
+  return std::make_shared<const ContactGeometry>(walls, params.rod_radius, params.g_hat, 2.0 * max_edge_length(rod));
+}
+
+struct WallContactModule::Cache : ModuleCache {
+  ContactNeighbours neighbours;
+};
+
+struct WallFrictionModule::Cache : ModuleCache {
+  ContactNeighbours neighbours;
+  Eigen::VectorXd start;          // m, the start state the pairs were found for
+  std::vector<LaggedPair> pairs;
+};
+
+WallContactModule::WallContactModule(std::shared_ptr<const ContactGeometry> geometry, const ContactParams& params)
+    : params_(params), geometry_(std::move(geometry)) {}
+
+std::unique_ptr<ModuleCache> WallContactModule::make_cache() const { return std::make_unique<Cache>(); }
 
 // E = sum over pairs of b(gap); gap = d(p, a, b) - t/2 - r, so
 //   F = -b'(gap) grad d,   K = b''(gap) grad d grad d^T + b'(gap) hess d   (projected to PSD).
 void WallContactModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const {
-  geometry_.for_each_pair(*ctx.x, stiffness != nullptr, [&](const ContactPair& pair) {
+  Cache scratch;
+  Cache& cache = cache_or(ctx, scratch);
+  geometry_->for_each_pair(*ctx.x, stiffness != nullptr, [&](const ContactPair& pair) {
     const BarrierValue b = contact_barrier(pair.gap, params_.g_hat, params_.kappa);
     if (b.first == 0.0) return;
     if (!pair.is_edge) {
@@ -48,34 +66,38 @@ void WallContactModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd>
         stiffness->add_block<4>(pair.first_dof, project_psd<4>(k));
       }
     }
-  });
+  }, cache.neighbours);
 }
 
 double WallContactModule::energy(const Eigen::VectorXd& x) const {
   double e = 0.0;
-  geometry_.for_each_pair(x, false, [&](const ContactPair& pair) {
+  ContactNeighbours neighbours;
+  geometry_->for_each_pair(x, false, [&](const ContactPair& pair) {
     e += contact_barrier(pair.gap, params_.g_hat, params_.kappa).energy;
-  });
+  }, neighbours);
   return e;
 }
 
 double WallContactModule::max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const {
-  return geometry_.max_step_fraction(*ctx.x, dx, 0.8);
+  Cache scratch;
+  return geometry_->max_step_fraction(*ctx.x, dx, 0.8, cache_or(ctx, scratch).neighbours);
 }
 
-WallFrictionModule::WallFrictionModule(const std::vector<WallSegment>& walls, const RodModel& rod,
-                                       const ContactParams& params)
-    : params_(params), geometry_(walls, params.rod_radius, params.g_hat, 2.0 * max_edge_length(rod)) {}
+WallFrictionModule::WallFrictionModule(std::shared_ptr<const ContactGeometry> geometry, const ContactParams& params)
+    : params_(params), geometry_(std::move(geometry)) {}
 
-const std::vector<WallFrictionModule::LaggedPair>& WallFrictionModule::lagged_pairs(const Eigen::VectorXd& start) const {
-  if (start.size() == cached_start_.size() && start == cached_start_) return cached_pairs_;
-  cached_start_ = start;
-  cached_pairs_.clear();
-  geometry_.for_each_pair(start, false, [&](const ContactPair& pair) {
+std::unique_ptr<ModuleCache> WallFrictionModule::make_cache() const { return std::make_unique<Cache>(); }
+
+const std::vector<WallFrictionModule::LaggedPair>& WallFrictionModule::lagged_pairs(const Eigen::VectorXd& start,
+                                                                                    Cache& c) const {
+  if (start.size() == c.start.size() && start == c.start) return c.pairs;
+  c.start = start;
+  c.pairs.clear();
+  geometry_->for_each_pair(start, false, [&](const ContactPair& pair) {
     const double lambda = -contact_barrier(pair.gap, params_.g_hat, params_.kappa).first;  // N
-    if (lambda > 0.0) cached_pairs_.push_back({pair.first_dof, lambda, Eigen::Vector2d(-pair.normal.y(), pair.normal.x())});
-  }, /*nodes_only=*/true);
-  return cached_pairs_;
+    if (lambda > 0.0) c.pairs.push_back({pair.first_dof, lambda, Eigen::Vector2d(-pair.normal.y(), pair.normal.x())});
+  }, c.neighbours, /*nodes_only=*/true);
+  return c.pairs;
 }
 
 void WallFrictionModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const {
@@ -83,7 +105,8 @@ void WallFrictionModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd
   // skipped when dv_dx = 0, which is also how a frame's forces at a committed state are asked for.
   if (!ctx.start) return;
   const double eps = params_.slip_velocity;
-  for (const LaggedPair& pair : lagged_pairs(ctx.start->x)) {
+  Cache scratch;
+  for (const LaggedPair& pair : lagged_pairs(ctx.start->x, cache_or(ctx, scratch))) {
     const double vt = pair.tangent.dot(ctx.v->segment<2>(pair.first_dof));
     const double y = std::abs(vt) / eps;
     const double f1 = y < 1.0 ? 2.0 * y - y * y : 1.0;

@@ -4,6 +4,8 @@
 // and nothing ever passes through a wall. Channel force/contact.
 #pragma once
 
+#include <memory>
+
 #include "sim/contact/contact_pairs.h"
 #include "sim/contact/contact_params.h"
 #include "sim/log/channel_names.h"
@@ -11,20 +13,30 @@
 
 namespace vascsim {
 
+// The geometry contact, friction and the run's statistics share: reach g_hat, the rod's radius
+// and edges up to twice the longest rest edge.
+std::shared_ptr<const ContactGeometry> make_contact_geometry(const std::vector<WallSegment>& walls, const RodModel& rod,
+                                                             const ContactParams& params);
+
 class WallContactModule : public ForceModule {
  public:
-  WallContactModule(const std::vector<WallSegment>& walls, const RodModel& rod, const ContactParams& params);
+  WallContactModule(std::shared_ptr<const ContactGeometry> geometry, const ContactParams& params);
+  // With a geometry of its own (tests).
+  WallContactModule(const std::vector<WallSegment>& walls, const RodModel& rod, const ContactParams& params)
+      : WallContactModule(make_contact_geometry(walls, rod, params), params) {}
   std::string channel() const override { return channel::kContactForce; }
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
   double max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const override;
+  std::unique_ptr<ModuleCache> make_cache() const override;
   // The barrier energy at positions x (J): what add() differentiates.
   double energy(const Eigen::VectorXd& x) const;
 
-  const ContactGeometry& geometry() const { return geometry_; }
+  const ContactGeometry& geometry() const { return *geometry_; }
 
  private:
+  struct Cache;
   ContactParams params_;
-  ContactGeometry geometry_;
+  std::shared_ptr<const ContactGeometry> geometry_;
 };
 
 // Regularised Coulomb friction between rod nodes and walls (paper V.B), lagged as in IPC: the
@@ -37,9 +49,12 @@ class WallContactModule : public ForceModule {
 // carry no friction (docs/contact.md). Channel force/friction.
 class WallFrictionModule : public ForceModule {
  public:
-  WallFrictionModule(const std::vector<WallSegment>& walls, const RodModel& rod, const ContactParams& params);
+  WallFrictionModule(std::shared_ptr<const ContactGeometry> geometry, const ContactParams& params);
+  WallFrictionModule(const std::vector<WallSegment>& walls, const RodModel& rod, const ContactParams& params)
+      : WallFrictionModule(make_contact_geometry(walls, rod, params), params) {}
   std::string channel() const override { return channel::kFrictionForce; }
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
+  std::unique_ptr<ModuleCache> make_cache() const override;
 
  private:
   struct LaggedPair {
@@ -47,15 +62,13 @@ class WallFrictionModule : public ForceModule {
     double lambda;            // N, normal force at the start of the step
     Eigen::Vector2d tangent;  // unit, along the wall
   };
-  // The pairs at the start of the step. Every Newton iteration of a step asks for the same start
-  // state, so they are found once per step and kept (this makes one module instance unsafe to
-  // share between threads; each run builds its own Model).
-  const std::vector<LaggedPair>& lagged_pairs(const Eigen::VectorXd& start) const;
+  // The pairs at the start of the step, kept in the run's cache: every Newton iteration of a
+  // step asks for the same start state, so they are found once per step.
+  struct Cache;
+  const std::vector<LaggedPair>& lagged_pairs(const Eigen::VectorXd& start, Cache& cache) const;
 
   ContactParams params_;
-  ContactGeometry geometry_;
-  mutable Eigen::VectorXd cached_start_;
-  mutable std::vector<LaggedPair> cached_pairs_;
+  std::shared_ptr<const ContactGeometry> geometry_;
 };
 
 }  // namespace vascsim

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "sim/contact/paper_contact.h"
 #include "sim/contact/wall_contact.h"
 #include "sim/control/tip_magnet_module.h"
 #include "sim/control/tip_servo_module.h"
@@ -66,10 +67,15 @@ void add_navigation_modules(const Scene& scene, Navigation& nav, Model& model) {
     load.frequency = scene.control.disturbance.omega / (2.0 * M_PI);
     model.forces.push_back(std::make_unique<PointLoadModule>(n, std::vector<PointLoadSpec>{load}));
   }
+  nav.contact_geometry = make_contact_geometry(nav.environment.walls, model.rod, nav.contact);
   if (scene.contact.mode == ContactMode::kImplicit) {
-    model.forces.push_back(std::make_unique<WallContactModule>(nav.environment.walls, model.rod, nav.contact));
+    model.forces.push_back(std::make_unique<WallContactModule>(nav.contact_geometry, nav.contact));
     if (nav.contact.friction > 0.0)
-      model.forces.push_back(std::make_unique<WallFrictionModule>(nav.environment.walls, model.rod, nav.contact));
+      model.forces.push_back(std::make_unique<WallFrictionModule>(nav.contact_geometry, nav.contact));
+  } else if (scene.contact.mode == ContactMode::kPaper) {
+    // The paper's penalty: wall forces decided between Newton solves (Run), applied as controls.
+    nav.paper_walls = std::make_shared<const WallDistanceField>(nav.environment.walls, 8.0 * model.rod.outer_radius);
+    model.forces.push_back(std::make_unique<ExplicitWallForceModule>(n));
   }
 }
 

@@ -8,11 +8,13 @@
 #include <memory>
 #include <optional>
 
+#include "sim/contact/contact_pairs.h"
 #include "sim/contact/contact_params.h"
 #include "sim/control/tip_controller.h"
 #include "sim/env/entry_port.h"
 #include "sim/env/environment.h"
 #include "sim/env/trajectory.h"
+#include "sim/env/wall_distance.h"
 #include "sim/step/model.h"
 
 namespace vascsim {
@@ -23,6 +25,10 @@ struct Navigation {
   Polyline corners;         // sharp centreline, start to goal
   std::optional<Trajectory> trajectory;
   ContactParams contact;
+  // The walls' contact geometry, one per run: contact, friction and the gap statistics share it.
+  std::shared_ptr<const ContactGeometry> contact_geometry;
+  // The paper's contact mode: the walls' distance field its push-out iterations query.
+  std::shared_ptr<const WallDistanceField> paper_walls;
   TipPlant plant;
 };
 

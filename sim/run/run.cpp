@@ -20,28 +20,21 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
 
 }  // namespace
 
-Run::Run(const Scene& scene, Model model, std::unique_ptr<Navigation> navigation)
-    : scene_(scene),
-      model_(std::move(model)),
-      navigation_(std::move(navigation)),
-      state_(initial_state(model_)),
-      workspace_(model_) {
-  const int n = model_.nodes();
+Run::Run(std::shared_ptr<const Model> model)
+    : model_(std::move(model)),
+      scene_(model_->scene),
+      navigation_(model_->navigation.get()),
+      state_(initial_state(*model_)),
+      workspace_(*model_) {
+  const int n = model_->nodes();
   if (navigation_) {
     controller_.emplace(scene_.control, *navigation_->trajectory, navigation_->plant);
-    const double reach = navigation_->contact.g_hat;
-    const double edge = model_.rod.rest_length.maxCoeff();
-    probe_.emplace(navigation_->environment.walls, model_.rod.outer_radius, reach, 2.0 * edge);
-    if (scene_.contact.mode == ContactMode::kPaper) {
-      paper_walls_.emplace(navigation_->environment.walls, 8.0 * model_.rod.outer_radius);
-      model_.forces.push_back(std::make_unique<ExplicitWallForceModule>(n));
-    }
     stats_.contact_time.assign(static_cast<std::size_t>(n), 0.0);
   }
   const std::uint32_t node_values = static_cast<std::uint32_t>(2 * n);
   channels_.push_back({channel::kPosition, "m", ChannelLayout::kNodeVectors, node_values});
   channels_.push_back({channel::kVelocity, "m/s", ChannelLayout::kNodeVectors, node_values});
-  for (const auto& f : model_.forces)
+  for (const auto& f : model_->forces)
     if (!contains(force_channels_, f->channel())) force_channels_.push_back(f->channel());
   // Kinematic actuation has no force module; its reported force is the controller's estimate.
   if (navigation_ && scene_.control.mode == ActuationMode::kKinematic && !contains(force_channels_, channel::kActuationForce))
@@ -57,7 +50,7 @@ Controls Run::controls_for_step(double dt) {
   Controls controls;
   controls.time = state_.t;
   if (!controller_) return controls;
-  const int tip = model_.nodes() - 1;
+  const int tip = model_->nodes() - 1;
   const TipCommand c = controller_->command(state_.t, dt, state_.position(tip), state_.velocity(tip));
   last_command_ = c;
   switch (scene_.control.mode) {
@@ -74,7 +67,7 @@ Controls Run::controls_for_step(double dt) {
       // The servo's reference moves from r(t) to r(t + dt) over the step.
       TipServo& servo = controls.servo;
       servo.active = true;
-      servo.first_node = model_.nodes() - std::min(scene_.control.actuated_nodes, model_.nodes());
+      servo.first_node = model_->nodes() - std::min(scene_.control.actuated_nodes, model_->nodes());
       servo.feedforward = c.feedforward;
       servo.velocity = (c.reference - navigation_->trajectory->position(controller_->reference_time(state_.t))) / dt;
       servo.position = c.reference - servo.velocity * dt;
@@ -90,13 +83,13 @@ Controls Run::controls_for_step(double dt) {
 bool Run::advance(double dt) {
   Controls controls = controls_for_step(dt);
   StepReport report;
-  if (paper_walls_) {
+  if (navigation_ && navigation_->paper_walls) {
     // The paper's contact: re-solve the step with updated wall forces until no node is inside.
     const State start = state_;
     for (int k = 1;; ++k) {
-      report = step(model_, state_, workspace_, controls, dt);
+      report = step(*model_, state_, workspace_, controls, dt);
       if (!report.ok) break;
-      const PaperContactUpdate u = paper_contact_update(*paper_walls_, model_.rod.outer_radius, scene_.contact.paper_gain,
+      const PaperContactUpdate u = paper_contact_update(*navigation_->paper_walls, model_->rod.outer_radius, scene_.contact.paper_gain,
                                                         state_.x, wall_forces_);
       stats_.paper_contact_iterations_max = std::max(stats_.paper_contact_iterations_max, k);
       if (u.settled || k >= scene_.contact.paper_iterations) break;
@@ -104,7 +97,7 @@ bool Run::advance(double dt) {
       controls.wall_forces = wall_forces_;
     }
   } else {
-    report = step(model_, state_, workspace_, controls, dt);
+    report = step(*model_, state_, workspace_, controls, dt);
   }
   stats_.rejected_steps += report.rejected;
   if (!report.ok) {
@@ -127,16 +120,16 @@ bool Run::advance(double dt) {
 
 Eigen::VectorXd Run::channel_force(const std::string& name, const Controls& controls) const {
   const ForceContext ctx = ForceContext::at(state_, controls);
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(model_.dofs());
-  for (const auto& m : model_.forces)
-    if (m->channel() == name) m->add(ctx, f, nullptr);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(model_->dofs());
+  for (std::size_t k = 0; k < model_->forces.size(); ++k)
+    if (model_->forces[k]->channel() == name) model_->forces[k]->add(module_context(ctx, workspace_, k), f, nullptr);
   return f;
 }
 
 void Run::update_statistics(double dt, const Controls& controls) {
   stats_.simulated_time = state_.t;
   if (!navigation_) return;
-  const int n = model_.nodes();
+  const int n = model_->nodes();
   const Vec2 tip = state_.position(n - 1);
   const double error = (navigation_->trajectory->position(controller_->reference_time(state_.t)) - tip).norm();
   stats_.tip_error_max = std::max(stats_.tip_error_max, error);
@@ -156,10 +149,11 @@ void Run::update_statistics(double dt, const Controls& controls) {
   // Contact: gaps, time in contact and the largest per-node wall force.
   // Gaps beyond the barrier's reach are not contact: only pairs within it are visited.
   double gap = std::numeric_limits<double>::infinity();
-  probe_->for_each_pair(state_.x, false, [&](const ContactPair& pair) { gap = std::min(gap, pair.gap); });
+  navigation_->contact_geometry->for_each_pair(
+      state_.x, false, [&](const ContactPair& pair) { gap = std::min(gap, pair.gap); }, probe_neighbours_);
   stats_.min_gap = std::min(stats_.min_gap, gap);
   stats_.max_penetration = std::max(stats_.max_penetration, -stats_.min_gap);
-  if (!std::isfinite(gap) && !paper_walls_) return;  // touching nothing: no wall force
+  if (!std::isfinite(gap) && !navigation_->paper_walls) return;  // touching nothing: no wall force
   const Eigen::VectorXd wall = channel_force(channel::kContactForce, controls);
   for (int i = 0; i < n; ++i) {
     const double magnitude = wall.segment<2>(2 * i).norm();
@@ -183,7 +177,7 @@ void Run::record(FrameSink& sink) {
     const Vec2 reference = navigation_->trajectory->position(controller_->reference_time(state_.t));
     values.push_back(reference.x());
     values.push_back(reference.y());
-    values.push_back((reference - state_.position(model_.nodes() - 1)).norm());
+    values.push_back((reference - state_.position(model_->nodes() - 1)).norm());
   }
   sink.write(state_.t, values);
   ++stats_.frames;
@@ -192,7 +186,7 @@ void Run::record(FrameSink& sink) {
 bool Run::solve_equilibrium(FrameSink& sink) {
   const auto wall_start = Clock::now();
   record(sink);
-  const StaticReport report = solve_static(model_, state_, workspace_, last_controls_);
+  const StaticReport report = solve_static(*model_, state_, workspace_, last_controls_);
   stats_.steps = report.increments;
   stats_.rejected_steps = report.rejected;
   stats_.newton_iterations = report.iterations;
@@ -211,11 +205,11 @@ bool Run::solve_equilibrium(FrameSink& sink) {
 }
 
 bool Run::run(FrameSink& sink, const std::function<void(double)>& progress) {
-  if (model_.solver.mode == SolveMode::kStatic) return solve_equilibrium(sink);
+  if (model_->solver.mode == SolveMode::kStatic) return solve_equilibrium(sink);
   const auto wall_start = Clock::now();
   const double duration = scene_.run.duration;
   const double interval = scene_.run.output_interval;
-  const double dt = model_.solver.dt;
+  const double dt = model_->solver.dt;
   record(sink);
   std::size_t next_frame = 1;
   bool ok = true;

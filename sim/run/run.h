@@ -53,15 +53,15 @@ struct RunStatistics {
 
 class Run {
  public:
-  // `navigation` may be null (a rod in free space). The model must come from the same scene
-  // (with add_navigation_modules applied when navigating).
-  Run(const Scene& scene, Model model, std::unique_ptr<Navigation> navigation);
+  // A run of a compiled model (sim/run/compile.h), which it shares and never changes.
+  explicit Run(std::shared_ptr<const Model> model);
 
   // Frame log channels this run records, in order.
   const std::vector<LogChannel>& channels() const { return channels_; }
-  const Model& model() const { return model_; }
+  const Model& model() const { return *model_; }
+  const Scene& scene() const { return model_->scene; }
   const State& state() const { return state_; }
-  const Navigation* navigation() const { return navigation_.get(); }
+  const Navigation* navigation() const { return model_->navigation.get(); }
   const RunStatistics& statistics() const { return stats_; }
 
   // Runs until scene.run.duration (or the first failure), writing a frame at t = 0 and every
@@ -82,12 +82,11 @@ class Run {
   // The force of every module writing channel `name`, at the committed state.
   Eigen::VectorXd channel_force(const std::string& name, const Controls& controls) const;
 
-  Scene scene_;
-  Model model_;
-  std::unique_ptr<Navigation> navigation_;
+  std::shared_ptr<const Model> model_;
+  const Scene& scene_;            // model_->scene
+  const Navigation* navigation_;  // model_->navigation, or null
   std::optional<TipController> controller_;
-  std::optional<ContactGeometry> probe_;             // measures gaps in every contact mode
-  std::optional<WallDistanceField> paper_walls_;     // paper contact mode
+  ContactNeighbours probe_neighbours_;               // the gap statistics' lists (every contact mode)
   State state_;
   Workspace workspace_;
   std::vector<LogChannel> channels_;

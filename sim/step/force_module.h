@@ -9,12 +9,15 @@
 // which must be symmetric and stay within BandedMatrix's band (nodes i-2..i+2). A force whose
 // exact Jacobian is not symmetric (friction) adds a symmetric approximation: Newton then
 // converges linearly but still to the right answer, since convergence is judged on the residual.
-// Modules are immutable (const): per-step inputs come in ForceContext (time, controls, the state
-// at the start of the step for lagged quantities). The only members that change are caches
-// that depend on nothing but those inputs (contact neighbour lists, friction's lagged pairs).
+// Modules are immutable (const), so one Model can be shared by many runs and threads: per-step
+// inputs come in ForceContext (time, controls, the state at the start of the step for lagged
+// quantities), and what a module keeps between calls (contact neighbour lists, friction's lagged
+// pairs) lives in a ModuleCache it declares (make_cache) and the run's Workspace stores, as
+// Drake's systems declare cache entries that their Context holds.
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 
 #include "sim/step/banded_matrix.h"
@@ -22,6 +25,12 @@
 #include "sim/step/state.h"
 
 namespace vascsim {
+
+// One module's mutable data for one run: a derived type of the module's own, made by
+// ForceModule::make_cache and handed back in ForceContext::cache.
+struct ModuleCache {
+  virtual ~ModuleCache() = default;
+};
 
 struct ForceContext {
   double t = 0.0;                         // s, time the forces act at (end of the step)
@@ -32,6 +41,8 @@ struct ForceContext {
                                           // applied loads (gravity, point loads) multiply by it
   const Controls* controls = nullptr;
   const State* start = nullptr;           // state at the start of the step
+  ModuleCache* cache = nullptr;           // the called module's cache in this run, or null (then a
+                                          // module that keeps one works from scratch: slower, same answer)
 
   // The context of a committed state, for the forces acting on it (a frame, a predictor): its
   // own time, positions and velocities, and itself as the start of the step.
@@ -61,6 +72,14 @@ class ForceModule {
     (void)dx;
     return 1.0;
   }
+  // The cache this module keeps between calls within one run, or null if it keeps none.
+  virtual std::unique_ptr<ModuleCache> make_cache() const { return nullptr; }
 };
+
+// The cache of type C in `ctx`, or `fallback` when the caller passed none.
+template <class C>
+C& cache_or(const ForceContext& ctx, C& fallback) {
+  return ctx.cache ? static_cast<C&>(*ctx.cache) : fallback;
+}
 
 }  // namespace vascsim

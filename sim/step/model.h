@@ -1,11 +1,10 @@
 // Model: the constant description of a run (MuJoCo's mjModel): the compiled rod, kinematic
-// boundary conditions, solver settings and the force modules the scene switched on. Built once
-// from a Scene by build_model(); step() and solve_static() only read it.
+// boundary conditions, solver settings, the force modules the scene switched on and, for a maze
+// scene, the navigation (environment, trajectory, contact geometry, plant). Made by compile()
+// (sim/run/compile.h); step(), solve_static() and Run only read it.
 //
-// Adding a force kind (contact, friction, magnetic actuation, drag variants) needs no change
-// here or in the stepper: build the Model, then push the module onto `forces`:
-//   Model model = build_model(scene);
-//   model.forces.push_back(std::make_unique<MyContactModule>(model.rod, environment, ...));
+// Adding a force kind needs no change here or in the stepper: a ForceModule that compile()
+// (build_model for loads, add_navigation_modules for navigation forces) pushes onto `forces`.
 #pragma once
 
 #include <memory>
@@ -30,18 +29,24 @@ struct NodeConstraint {
   Vec2 rate(double t) const;      // dx/dt, m/s
 };
 
+struct Navigation;  // sim/run/navigation.h
+
 struct Model {
+  Scene scene;  // the scene as resolved by compile() (run duration, rod placed at the entry)
+  std::shared_ptr<const Navigation> navigation;  // null for a rod in free space
   RodModel rod;
   SolverSpec solver;
   std::vector<NodeConstraint> constraints;  // each node at most once
-  std::vector<std::unique_ptr<const ForceModule>> forces;
+  // Shared, immutable: copying a Model shares its modules, whose per-run data live in Workspace.
+  std::vector<std::shared_ptr<const ForceModule>> forces;
 
   int nodes() const { return rod.nodes; }
   int dofs() const { return 2 * rod.nodes; }
 };
 
-// Compiles the scene's rod, shape, boundary, loads and solver sections. Throws InputError (naming
-// scene.file and the JSON path) for node indices out of range or a node constrained twice.
+// The rod part of compile(): the scene's rod, shape, boundary, loads and solver sections, without
+// navigation (tests of the rod alone build on it). Throws InputError (naming scene.file and the
+// JSON path) for node indices out of range or a node constrained twice.
 Model build_model(const Scene& scene);
 // The state at t = 0: the initial shape at rest, constrained nodes moving with their prescription.
 State initial_state(const Model& model);

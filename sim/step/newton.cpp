@@ -12,6 +12,7 @@ Workspace::Workspace(const Model& model) : jacobian(model.dofs()), elastic(model
   for (Eigen::VectorXd* v : {&residual, &gradient, &force, &x, &v, &dx, &x_trial, &x_hat, &v_hat, &target})
     v->setZero(n);
   fixed.assign(static_cast<std::size_t>(n), 0);
+  for (const auto& f : model.forces) caches.push_back(f->make_cache());
 }
 
 namespace {
@@ -71,7 +72,7 @@ double assemble(const Model& model, const NewtonProblem& p, const Eigen::VectorX
   ws.force.setZero();
   if (!model.forces.empty()) {
     const ForceContext ctx = context_of(p, x, ws.v);
-    for (const auto& f : model.forces) f->add(ctx, ws.force, jac);
+    for (std::size_t k = 0; k < model.forces.size(); ++k) model.forces[k]->add(module_context(ctx, ws, k), ws.force, jac);
   }
 
   double inertia_max = 0.0, grad_max = 0.0, force_max = 0.0;
@@ -150,7 +151,8 @@ NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace
     double alpha = 1.0;
     if (!model.forces.empty()) {
       const ForceContext ctx = context_of(p, ws.x, ws.v);
-      for (const auto& f : model.forces) alpha = std::min(alpha, f->max_step_fraction(ctx, ws.dx));
+      for (std::size_t k = 0; k < model.forces.size(); ++k)
+        alpha = std::min(alpha, model.forces[k]->max_step_fraction(module_context(ctx, ws, k), ws.dx));
       if (!(alpha > 0.0)) {
         out.failure = "a force module allows no step along the Newton direction";
         return out;

@@ -34,7 +34,14 @@ struct Workspace {
   Eigen::VectorXd x, v, dx, x_trial, x_hat, v_hat, target;  // (2N)
   std::vector<char> fixed;   // (2N), 1 for a prescribed degree of freedom
   ElasticScratch elastic;
+  std::vector<std::unique_ptr<ModuleCache>> caches;  // one per Model::forces entry (null: none)
 };
+
+// `ctx` for force module k of `model`, with its cache in `ws`.
+inline ForceContext module_context(ForceContext ctx, const Workspace& ws, std::size_t k) {
+  ctx.cache = ws.caches[k].get();
+  return ctx;
+}
 
 // One nonlinear solve. x_hat, v_hat and target are read from the Workspace.
 struct NewtonProblem {

@@ -50,7 +50,8 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
   double alpha = 1.0;
   if (!model.forces.empty()) {
     const ForceContext ctx = ForceContext::at(state, controls);
-    for (const auto& f : model.forces) alpha = std::min(alpha, f->max_step_fraction(ctx, ws.dx));
+    for (std::size_t k = 0; k < model.forces.size(); ++k)
+      alpha = std::min(alpha, model.forces[k]->max_step_fraction(module_context(ctx, ws, k), ws.dx));
   }
   ws.x = state.x + alpha * ws.dx;
   for (std::size_t d = 0; d < ws.fixed.size(); ++d)

@@ -1,0 +1,79 @@
+// compile(): one step from a scene to a const Model that leaves its input alone, and that many
+// runs can share at once: four threads running one compiled Model write exactly the frames of a
+// run on its own (the contact neighbour lists and friction's lagged pairs live in each run's
+// Workspace, not in the shared modules).
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <thread>
+#include <type_traits>
+
+#include "sim/io/scene_reader.h"
+#include "sim/run/compile.h"
+#include "sim/run/navigation.h"
+#include "sim/run/run.h"
+
+namespace vascsim {
+namespace {
+
+static_assert(std::is_copy_constructible_v<Model>, "a Model can be copied (its modules are shared)");
+
+// Every frame's time and values, as bytes.
+class ByteSink : public FrameSink {
+ public:
+  void write(double time, const std::vector<double>& values) override {
+    append(&time, 1);
+    append(values.data(), values.size());
+  }
+  std::string bytes;
+
+ private:
+  void append(const double* v, std::size_t n) { bytes.append(reinterpret_cast<const char*>(v), n * sizeof(double)); }
+};
+
+Scene default_maze(double duration) {
+  Scene s = read_scene_file(std::string(VASCSIM_SOURCE_DIR) + "/scenes/maze_default.json");
+  s.run.duration = duration;  // the first wall contacts happen from about 17 s on
+  s.run.duration_from_path = false;
+  return s;
+}
+
+TEST(Compile, LeavesItsSceneAloneAndResolvesACopy) {
+  // A maze scene without a duration: it runs until its reference reaches the goal, plus settling.
+  const Scene input = read_scene_text(R"({"maze": {"seed": 4}})", "implicit.json");
+  const std::string before = scene_to_json(input);
+  const auto model = compile(input);
+  EXPECT_EQ(scene_to_json(input), before) << "compile() changed the scene it was given";
+  ASSERT_NE(model->navigation, nullptr);
+  EXPECT_NEAR(model->scene.run.duration, model->navigation->trajectory->duration() + RunSpec::kSettleTime, 1e-12);
+  EXPECT_NE(scene_to_json(model->scene), before) << "the compiled scene resolves the duration and the rod's place";
+  // Contact, friction and the gap statistics share one geometry.
+  const auto with_friction = compile(default_maze(1.0));
+  ASSERT_GT(with_friction->scene.contact.friction, 0.0);
+  EXPECT_EQ(with_friction->navigation->contact_geometry.use_count(), 3) << "navigation, contact and friction";
+}
+
+TEST(Compile, FourThreadsShareOneModelAndWriteTheSequentialBytes) {
+  const std::shared_ptr<const Model> model = compile(default_maze(19.0));
+  ByteSink alone;
+  vascsim::Run sequential(model);
+  ASSERT_TRUE(sequential.run(alone));
+  ASSERT_GT(sequential.statistics().contact_force_max, 0.0) << "the run must touch the walls (contact caches)";
+  std::vector<ByteSink> sinks(4);
+  std::vector<std::thread> threads;
+  std::vector<char> ok(4, 0);
+  for (int k = 0; k < 4; ++k)
+    threads.emplace_back([&, k] {
+      vascsim::Run run(model);
+      ok[static_cast<std::size_t>(k)] = run.run(sinks[static_cast<std::size_t>(k)]);
+    });
+  for (auto& t : threads) t.join();
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_TRUE(ok[static_cast<std::size_t>(k)]) << "thread " << k;
+    EXPECT_EQ(sinks[static_cast<std::size_t>(k)].bytes.size(), alone.bytes.size()) << "thread " << k;
+    EXPECT_TRUE(sinks[static_cast<std::size_t>(k)].bytes == alone.bytes) << "thread " << k << " wrote other frames";
+  }
+}
+
+}  // namespace
+}  // namespace vascsim
