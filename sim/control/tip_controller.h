@@ -41,6 +41,11 @@ class TipController {
   TipCommand command(double t, double dt, const Vec2& tip_position, const Vec2& tip_velocity) const;
   // The disturbance the plant receives at time t (force in N or position offset in m).
   Vec2 disturbance(double t) const;
+  // The disturbance as a displacement of the tip (m) when it is one (disturbance kind
+  // "position"), else zero.
+  Vec2 position_disturbance(double t) const {
+    return spec_.disturbance.kind == DisturbanceKind::kPosition ? disturbance(t) : Vec2::Zero();
+  }
   // Reference time on the trajectory for simulation time t (the reference may start late).
   double reference_time(double t) const { return t - spec_.lead_time; }
   const ControlSpec& spec() const { return spec_; }

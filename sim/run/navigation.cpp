@@ -4,8 +4,6 @@
 
 #include "sim/contact/paper_contact.h"
 #include "sim/contact/wall_contact.h"
-#include "sim/control/tip_magnet_module.h"
-#include "sim/control/tip_servo_module.h"
 #include "sim/env/centreline.h"
 #include "sim/rod/loads.h"
 #include "sim/scene/input_error.h"
@@ -43,22 +41,11 @@ void add_navigation_modules(const Scene& scene, Navigation& nav, Model& model) {
   double mass = 0.0;
   for (int k = 0; k < actuated; ++k) mass += model.rod.mass[n - 1 - k];
   nav.plant.mass = mass;
-  if (scene.loads.drag.enabled) {
-    for (const auto& f : model.forces)
-      if (const auto* drag = dynamic_cast<const QuadraticDragModule*>(f.get())) nav.plant.drag_coefficient = drag->tangential_coefficients()[n - 1];
-  }
+  if (scene.loads.drag.enabled)
+    nav.plant.drag_coefficient = QuadraticDragModule(model.rod, scene.loads.drag).tangential_coefficients()[n - 1];
 
-  switch (scene.control.mode) {
-    case ActuationMode::kForce:
-      model.forces.push_back(std::make_unique<TipServoModule>(n));
-      break;
-    case ActuationMode::kField:
-      model.forces.push_back(std::make_unique<TipServoModule>(n));
-      model.forces.push_back(std::make_unique<TipMagnetModule>(n, scene.control.magnet_moment));
-      break;
-    case ActuationMode::kKinematic:
-      break;  // the tip is a prescribed node (Controls::targets)
-  }
+  nav.actuation = make_actuation(scene.control);
+  for (auto& module : nav.actuation->modules(n)) model.forces.push_back(std::move(module));
   if (scene.control.disturbance.amplitude > 0.0 && scene.control.disturbance.kind == DisturbanceKind::kForce) {
     PointLoadSpec load;
     load.node = n - 1;

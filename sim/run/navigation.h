@@ -10,6 +10,7 @@
 
 #include "sim/contact/contact_pairs.h"
 #include "sim/contact/contact_params.h"
+#include "sim/control/actuation.h"
 #include "sim/control/tip_controller.h"
 #include "sim/env/entry_port.h"
 #include "sim/env/environment.h"
@@ -30,6 +31,7 @@ struct Navigation {
   // The paper's contact mode: the walls' distance field its push-out iterations query.
   std::shared_ptr<const WallDistanceField> paper_walls;
   TipPlant plant;
+  std::shared_ptr<const Actuation> actuation;  // how the controller's command reaches the rod
 };
 
 // Resolves the environment and path of `scene` and places the rod at the entry: overwrites

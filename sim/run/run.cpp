@@ -36,9 +36,8 @@ Run::Run(std::shared_ptr<const Model> model)
   channels_.push_back({channel::kVelocity, "m/s", ChannelLayout::kNodeVectors, node_values});
   for (const auto& f : model_->forces)
     if (!contains(force_channels_, f->channel())) force_channels_.push_back(f->channel());
-  // Kinematic actuation has no force module; its reported force is the controller's estimate.
-  if (navigation_ && scene_.control.mode == ActuationMode::kKinematic && !contains(force_channels_, channel::kActuationForce))
-    force_channels_.push_back(channel::kActuationForce);
+  // Every navigation run logs its magnetic force, also when its actuation has no force module.
+  if (navigation_ && !contains(force_channels_, channel::kActuationForce)) force_channels_.push_back(channel::kActuationForce);
   for (const auto& name : force_channels_) channels_.push_back({name, "N", ChannelLayout::kNodeVectors, node_values});
   if (navigation_) {
     channels_.push_back({channel::kTipReference, "m", ChannelLayout::kVector, 2});
@@ -51,31 +50,14 @@ Controls Run::controls_for_step(double dt) {
   controls.time = state_.t;
   if (!controller_) return controls;
   const int tip = model_->nodes() - 1;
-  const TipCommand c = controller_->command(state_.t, dt, state_.position(tip), state_.velocity(tip));
-  last_command_ = c;
-  switch (scene_.control.mode) {
-    case ActuationMode::kKinematic: {
-      Vec2 end = c.position;
-      if (scene_.control.disturbance.kind == DisturbanceKind::kPosition) end += controller_->disturbance(state_.t + dt);
-      controls.targets.push_back({tip, state_.position(tip), (end - state_.position(tip)) / dt});
-      break;
-    }
-    case ActuationMode::kField:
-      controls.field = c.field;
-      [[fallthrough]];
-    case ActuationMode::kForce: {
-      // The servo's reference moves from r(t) to r(t + dt) over the step.
-      TipServo& servo = controls.servo;
-      servo.active = true;
-      servo.first_node = model_->nodes() - std::min(scene_.control.actuated_nodes, model_->nodes());
-      servo.feedforward = c.feedforward;
-      servo.velocity = (c.reference - navigation_->trajectory->position(controller_->reference_time(state_.t))) / dt;
-      servo.position = c.reference - servo.velocity * dt;
-      servo.kp = scene_.control.kp;
-      servo.kd = scene_.control.kd;
-      break;
-    }
-  }
+  last_command_ = controller_->command(state_.t, dt, state_.position(tip), state_.velocity(tip));
+  ActuationStep step;
+  step.dt = dt;
+  step.nodes = model_->nodes();
+  step.tip = state_.position(tip);
+  step.reference_now = navigation_->trajectory->position(controller_->reference_time(state_.t));
+  step.tip_offset = controller_->position_disturbance(state_.t + dt);
+  navigation_->actuation->set_controls(last_command_, step, controls);
   controls.wall_forces = wall_forces_;
   return controls;
 }
@@ -126,6 +108,12 @@ Eigen::VectorXd Run::channel_force(const std::string& name, const Controls& cont
   return f;
 }
 
+Eigen::VectorXd Run::logged_force(const std::string& name, const Controls& controls) const {
+  Eigen::VectorXd f = channel_force(name, controls);
+  if (navigation_ && name == channel::kActuationForce) navigation_->actuation->logged_force(last_command_, f);
+  return f;
+}
+
 void Run::update_statistics(double dt, const Controls& controls) {
   stats_.simulated_time = state_.t;
   if (!navigation_) return;
@@ -136,9 +124,7 @@ void Run::update_statistics(double dt, const Controls& controls) {
   error_square_time_ += error * error * dt;
   stats_.tip_error_rms = std::sqrt(error_square_time_ / std::max(state_.t, 1e-300));
   // The magnetic force as applied at the end of the step (the servo is implicit).
-  Vec2 actuation = last_command_.force;
-  if (scene_.control.mode != ActuationMode::kKinematic)
-    actuation = channel_force(channel::kActuationForce, controls).reshaped(2, n).rowwise().sum();
+  const Vec2 actuation = logged_force(channel::kActuationForce, controls).reshaped(2, n).rowwise().sum();
   stats_.actuation_force_max = std::max(stats_.actuation_force_max, actuation.norm());
   actuation_time_ += actuation.norm() * dt;
   stats_.actuation_force_mean = actuation_time_ / std::max(state_.t, 1e-300);
@@ -168,9 +154,7 @@ void Run::record(FrameSink& sink) {
   values.insert(values.end(), state_.x.data(), state_.x.data() + state_.x.size());
   values.insert(values.end(), state_.v.data(), state_.v.data() + state_.v.size());
   for (const auto& name : force_channels_) {
-    Eigen::VectorXd f = channel_force(name, last_controls_);
-    if (name == channel::kActuationForce && scene_.control.mode == ActuationMode::kKinematic && navigation_)
-      f.segment<2>(f.size() - 2) = last_command_.force;
+    const Eigen::VectorXd f = logged_force(name, last_controls_);
     values.insert(values.end(), f.data(), f.data() + f.size());
   }
   if (navigation_) {

@@ -81,6 +81,9 @@ class Run {
   void update_statistics(double dt, const Controls& controls);
   // The force of every module writing channel `name`, at the committed state.
   Eigen::VectorXd channel_force(const std::string& name, const Controls& controls) const;
+  // What the log and the statistics report for channel `name`: the modules' force, with the
+  // actuation's own estimate for the magnetic force where it has no module.
+  Eigen::VectorXd logged_force(const std::string& name, const Controls& controls) const;
 
   std::shared_ptr<const Model> model_;
   const Scene& scene_;            // model_->scene
