@@ -171,6 +171,13 @@ int run_run_command(int argc, char** argv) {
                 s.goal_reached ? (std::to_string(s.goal_time) + " s").c_str() : "", 1e3 * s.tip_error_rms,
                 1e3 * s.tip_error_max, 1e3 * s.max_penetration);
   std::printf("summary: %s\n", summary_path.c_str());
+  const auto warn = [](const char* what, const WarningCount& w) {
+    if (w.count > 0) std::fprintf(stderr, "vascsim run: warning: %s %d times, first at t = %g s (summary.json /warnings)\n", what, w.count, w.first_time);
+  };
+  warn("Newton stopped at round-off before rel_tol", s.warnings.newton_round_off);
+  warn("a step was retried with a smaller dt", s.warnings.step_retried);
+  warn("paper contact hit contact.paper_iterations unsettled", s.warnings.paper_contact_cap);
+  warn("the static equilibrium is unstable (the Newton matrix has negative pivots)", s.warnings.unstable_equilibrium);
   if (!ok) {
     std::fprintf(stderr, "vascsim run: simulation failed: %s\n", s.failure.c_str());
     return 1;

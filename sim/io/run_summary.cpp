@@ -37,6 +37,11 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   j["simulated_time"] = s.simulated_time;
   j["wall_time"] = s.wall_time;
   j["real_time_factor"] = s.wall_time > 0 && !is_static ? json(s.simulated_time / s.wall_time) : json(nullptr);
+  auto warning = [](const WarningCount& w) { return json{{"count", w.count}, {"first_time", number(w.first_time)}}; };
+  j["warnings"] = {{"newton_round_off_stop", warning(s.warnings.newton_round_off)},
+                   {"step_retried", warning(s.warnings.step_retried)},
+                   {"paper_contact_iteration_cap", warning(s.warnings.paper_contact_cap)},
+                   {"unstable_equilibrium", warning(s.warnings.unstable_equilibrium)}};
   const State& state = run.state();
   json positions = json::array(), velocities = json::array();
   for (Eigen::Index i = 0; i < state.x.size(); i += 2) {

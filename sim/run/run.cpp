@@ -63,6 +63,7 @@ Controls Run::controls_for_step(double dt) {
 }
 
 bool Run::advance(double dt) {
+  const double t_start = state_.t;  // warnings are dated by the step's start
   Controls controls = controls_for_step(dt);
   StepReport report;
   if (navigation_ && navigation_->paper_walls) {
@@ -74,7 +75,11 @@ bool Run::advance(double dt) {
       const PaperContactUpdate u = paper_contact_update(*navigation_->paper_walls, model_->rod.outer_radius, scene_.contact.paper_gain,
                                                         state_.x, wall_forces_);
       stats_.paper_contact_iterations_max = std::max(stats_.paper_contact_iterations_max, k);
-      if (u.settled || k >= scene_.contact.paper_iterations) break;
+      if (u.settled) break;
+      if (k >= scene_.contact.paper_iterations) {
+        stats_.warnings.paper_contact_cap.note(t_start);
+        break;
+      }
       state_ = start;
       controls.wall_forces = wall_forces_;
     }
@@ -82,6 +87,7 @@ bool Run::advance(double dt) {
     report = step(*model_, state_, workspace_, controls, dt);
   }
   stats_.rejected_steps += report.rejected;
+  if (report.rejected > 0) stats_.warnings.step_retried.note(t_start);
   if (!report.ok) {
     stats_.failed = true;
     stats_.failure = report.failure;
@@ -92,6 +98,7 @@ bool Run::advance(double dt) {
     stats_.failure = "the state became non-finite at t = " + std::to_string(state_.t) + " s";
     return false;
   }
+  if (report.round_off_stop) stats_.warnings.newton_round_off.note(t_start);
   ++stats_.steps;
   stats_.newton_iterations += report.iterations;
   stats_.newton_iterations_max = std::max(stats_.newton_iterations_max, report.iterations);
@@ -175,6 +182,7 @@ bool Run::solve_equilibrium(FrameSink& sink) {
   stats_.rejected_steps = report.rejected;
   stats_.newton_iterations = report.iterations;
   stats_.newton_iterations_max = report.iterations;
+  if (report.ok && report.negative_pivots > 0) stats_.warnings.unstable_equilibrium.note(1.0);
   if (report.ok) {
     // The load scale plays the part of time: 0 unloaded, 1 in equilibrium (docs/frame-log.md).
     state_.t = 1.0;

@@ -27,6 +27,24 @@ class FrameSink {
   virtual void write(double time, const std::vector<double>& values) = 0;
 };
 
+// A condition worth knowing that did not stop the run (MuJoCo's mjData.warning): how often, and
+// when first. Reported in summary.json rather than printed and lost.
+struct WarningCount {
+  int count = 0;
+  double first_time = std::numeric_limits<double>::quiet_NaN();  // s, start of the step (static: 1)
+  void note(double t, int times = 1) {
+    if (count == 0) first_time = t;
+    count += times;
+  }
+};
+
+struct RunWarnings {
+  WarningCount newton_round_off;      // steps whose Newton stopped at round-off, not at rel_tol
+  WarningCount step_retried;          // steps that needed a smaller dt (see rejected_steps)
+  WarningCount paper_contact_cap;     // paper contact: steps that hit contact.paper_iterations unsettled
+  WarningCount unstable_equilibrium;  // static mode: the equilibrium found is unstable
+};
+
 struct RunStatistics {
   int steps = 0;
   long long newton_iterations = 0;
@@ -49,6 +67,7 @@ struct RunStatistics {
   double max_penetration = 0.0;      // m, max(0, -min_gap)
   std::vector<double> contact_time;  // (N), s, time each node spent touching a wall
   int paper_contact_iterations_max = 0;
+  RunWarnings warnings;
 };
 
 class Run {

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "sim/step/banded_ldlt.h"
+
 namespace vascsim {
 
 StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls) {
@@ -54,6 +56,11 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
   }
   report.load_scale = lambda;
   report.ok = lambda >= 1.0;
+  if (report.ok) {
+    p.load_scale = 1.0;
+    assemble(model, p, x, ws, true);
+    report.negative_pivots = banded_block_ldlt_factor(ws.jacobian).negative_pivots;
+  }
   state.x = x;
   state.v.setZero();
   state.h_prev = 0.0;

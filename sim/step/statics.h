@@ -20,6 +20,10 @@ struct StaticReport {
   int rejected = 0;          // failed increments (retried smaller)
   int iterations = 0;        // Newton iterations over all increments
   double load_scale = 0.0;   // reached
+  // Negative pivots of the Newton matrix at the equilibrium found: its count of negative
+  // eigenvalues (Sylvester's law of inertia). Above 0 the equilibrium is unstable (a column
+  // loaded past its buckling load stays straight, but a nudge would make it buckle).
+  int negative_pivots = 0;
   std::string failure;
 };
 

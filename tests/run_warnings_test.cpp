@@ -1,0 +1,97 @@
+// Warnings are counted, not lost: conditions that did not stop a run (Newton stopping at
+// round-off, steps retried with a smaller dt, the paper contact's iteration cap, an unstable
+// static equilibrium) reach summary.json with how often and when they first happened, and stay
+// at zero where they did not happen.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/io/run_summary.h"
+#include "sim/io/scene_reader.h"
+#include "sim/run/compile.h"
+#include "sim/run/run.h"
+#include "tests/rod_test_scenes.h"
+
+namespace vascsim {
+namespace {
+
+class CountingSink : public FrameSink {
+ public:
+  void write(double, const std::vector<double>&) override { ++frames; }
+  int frames = 0;
+};
+
+nlohmann::json summary_of(const Scene& scene) {
+  vascsim::Run run(compile(scene));
+  CountingSink sink;
+  EXPECT_TRUE(run.run(sink)) << run.statistics().failure;
+  return nlohmann::json::parse(run_summary_json(run.scene(), run));
+}
+nlohmann::json warnings_of(const Scene& scene) { return summary_of(scene)["warnings"]; }
+
+Scene default_maze(double duration) {
+  Scene s = read_scene_file(std::string(VASCSIM_SOURCE_DIR) + "/scenes/maze_default.json");
+  s.run.duration = duration;
+  s.run.duration_from_path = false;
+  return s;
+}
+
+void expect_count(const nlohmann::json& w, const char* name, bool happened) {
+  ASSERT_TRUE(w.contains(name)) << w.dump();
+  if (happened) {
+    EXPECT_GT(w[name]["count"].get<int>(), 0) << name << ": " << w.dump();
+    EXPECT_TRUE(w[name]["first_time"].is_number()) << name << ": " << w.dump();
+  } else {
+    EXPECT_EQ(w[name]["count"], 0) << name << ": " << w.dump();
+    EXPECT_TRUE(w[name]["first_time"].is_null()) << name;
+  }
+}
+
+// (The default scene's own Newton does stop at round-off now and then: that count is not zero.)
+TEST(RunWarnings, NoneInAnOrdinaryRun) {
+  const auto w = warnings_of(default_maze(1.0));
+  for (const char* name : {"step_retried", "paper_contact_iteration_cap", "unstable_equilibrium"}) expect_count(w, name, false);
+}
+
+TEST(RunWarnings, RoundOffStopsAndRetriesAreCounted) {
+  Scene tight = default_maze(0.2);
+  tight.solver.rel_tol = 1e-17;  // below what double precision can reach: Newton stops at round-off
+  tight.solver.abs_tol = 0.0;
+  expect_count(warnings_of(tight), "newton_round_off_stop", true);
+
+  Scene coarse = default_maze(1.0);
+  coarse.solver.dt = 0.05;  // too long to converge in one Newton iteration: steps are retried with dt/2
+  coarse.solver.max_iterations = 1;
+  coarse.solver.rel_tol = 1e-6;
+  const auto s = summary_of(coarse);
+  expect_count(s["warnings"], "step_retried", true);
+  EXPECT_LE(s["warnings"]["step_retried"]["count"].get<int>(), s["rejected_steps"].get<int>())
+      << "a retried step has one or more rejected attempts";
+}
+
+TEST(RunWarnings, PaperContactIterationCapIsCounted) {
+  Scene paper = default_maze(19.0);  // the first wall contacts come at about 17 s
+  paper.contact.mode = ContactMode::kPaper;
+  paper.contact.paper_iterations = 1;
+  const auto w = warnings_of(paper);
+  expect_count(w, "paper_contact_iteration_cap", true);
+  EXPECT_GT(w["paper_contact_iteration_cap"]["first_time"].get<double>(), 15.0);
+}
+
+// docs/references.md section 3 (Timoshenko & Gere): a clamped-free column stays straight under an
+// axial load past P_cr = pi^2 EI / (4 L^2), but that equilibrium is unstable.
+TEST(RunWarnings, UnstableStaticEquilibriumIsCounted) {
+  for (const double factor : {0.5, 1.5}) {
+    Scene column = test::cantilever(21);
+    const double ei = test::bending_stiffness(column.rod), l = column.rod.length;
+    PointLoadSpec tip;
+    tip.force = Vec2(-factor * M_PI * M_PI * ei / (4 * l * l), 0.0);
+    column.loads.point_loads.push_back(tip);
+    expect_count(warnings_of(column), "unstable_equilibrium", factor > 1.0);
+  }
+}
+
+}  // namespace
+}  // namespace vascsim
