@@ -252,6 +252,27 @@ TEST(ReplayServer, LiveFollowSeesFramesAppendedAfterStart) {
   EXPECT_TRUE(live->body == vascsim::test::read_text(png)) << "a live frame differs from the still of the final log";
 }
 
+// A run that failed replays up to its last frame, with the failure marked on the timeline.
+TEST(ReplayServer, AFailedRunReplaysToItsLastFrame) {
+  ScratchDir dir("replay_failed");
+  const std::string run = dir / "run";
+  fs::create_directories(run);
+  const std::string scene = R"({"name": "fails", "maze": {"seed": 4}, "rod": {"nodes": 12},
+      "solver": {"max_iterations": 1, "adaptive": false, "rel_tol": 1e-14}, "run": {"duration": 1}})";
+  vascsim::test::write_text(dir / "scene.json", scene);
+  const auto r = vascsim::test::run_vascsim("run " + (dir / "scene.json") + " --out " + run + " --force --quiet");
+  ASSERT_EQ(r.exit_code, 1) << "the scene was meant to diverge: " << r.output;
+  LiveServer s({{run}});
+  const json info = get_json(s, "/api/run");
+  EXPECT_EQ(info["summary"]["ok"], false);
+  EXPECT_EQ(info["growing"], false);
+  const json events = get_json(s, "/api/events");
+  ASSERT_FALSE(events["events"].empty());
+  EXPECT_EQ(events["events"].back()["kind"], "failure");
+  EXPECT_DOUBLE_EQ(events["events"].back()["t"].get<double>(), info["last_time"].get<double>());
+  EXPECT_EQ(s.get("/api/frame.png?width=64&height=64&t=" + std::to_string(info["last_time"].get<double>()))->status, 200);
+}
+
 TEST(ReplayServer, CompareAlignsRunsBySimulatedTime) {
   ScratchDir dir("replay_compare");
   render::SyntheticLogSpec a = long_spec(), b = long_spec();
