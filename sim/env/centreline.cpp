@@ -51,20 +51,27 @@ Polyline cell_path_centreline(const GridMaze& maze, const std::vector<Cell>& cel
   return line;
 }
 
-Polyline reference_centreline(const Environment& env, const MazeSpec& maze, const PathSpec& path) {
+MazeRoute solve_route(const Environment& env, const MazeSpec& maze, const PathSpec& path) {
+  MazeRoute route;
   if (maze.explicit_walls) {
-    const GridMaze grid = grid_from_walls(maze);  // throws if start and goal are not connected
-    Polyline line = cell_path_centreline(grid, solve_breadth_first(grid));
-    attach_ends(line, maze.start, maze.goal, 1e-9 * std::min(grid.pitch_x(), grid.pitch_y()));
-    return line;
+    route.grid = grid_from_walls(maze);  // throws if start and goal are not connected
+    route.breadth_first = true;
+    route.cells = solve_breadth_first(route.grid);
+    route.corners = cell_path_centreline(route.grid, route.cells);
+    attach_ends(route.corners, maze.start, maze.goal, 1e-9 * std::min(route.grid.pitch_x(), route.grid.pitch_y()));
+    return route;
   }
-  const GridMaze generated = env.grid ? GridMaze() : generate_maze(maze);
-  const GridMaze& grid = env.grid ? *env.grid : generated;
-  const std::vector<Cell> cells =
-      path.solver == PathSolver::kWallFollower ? solve_wall_follower(grid) : solve_breadth_first(grid);
-  if (cells.empty())  // a generated maze is perfect, so this means a hand-made grid without a route
+  route.grid = env.grid ? *env.grid : generate_maze(maze);
+  route.breadth_first = path.solver != PathSolver::kWallFollower;
+  route.cells = route.breadth_first ? solve_breadth_first(route.grid) : solve_wall_follower(route.grid);
+  if (route.cells.empty())  // a generated maze is perfect, so this means a hand-made grid without a route
     throw InputError("/path/solver: the solver found no route from the start cell to the goal cell");
-  return cell_path_centreline(grid, cells);
+  route.corners = cell_path_centreline(route.grid, route.cells);
+  return route;
+}
+
+Polyline reference_centreline(const Environment& env, const MazeSpec& maze, const PathSpec& path) {
+  return solve_route(env, maze, path).corners;
 }
 
 double max_clear_corner_radius(const Environment& env, const MazeSpec& maze) {

@@ -17,11 +17,22 @@ namespace vascsim {
 // `cells` must be a route of consecutive neighbouring cells (a solver's output); empty gives empty.
 Polyline cell_path_centreline(const GridMaze& maze, const std::vector<Cell>& cells);
 
-// The reference centreline of a scene's maze. Generated mazes: the solver named by path.solver on
-// env.grid (regenerated from `maze` if env.grid is empty). Explicit walls: always breadth-first
-// search on grid_from_walls(maze), with maze.start and maze.goal as the first and last points (joined
-// to the nearest cell centres when they are not centres themselves). Throws InputError if no path
-// exists (message starting with a JSON path, e.g. "/maze: ...").
+// A maze's route, solved once: the grid it was solved on, the cells from start to goal, which
+// solver found them, and the reference centreline through them.
+struct MazeRoute {
+  GridMaze grid;
+  std::vector<Cell> cells;
+  bool breadth_first = false;  // else the wall follower
+  Polyline corners;            // the sharp centreline, start to goal
+};
+
+// The route of a scene's maze. Generated mazes: the solver named by path.solver on env.grid
+// (regenerated from `maze` if env.grid is empty). Explicit walls: always breadth-first search on
+// grid_from_walls(maze), with maze.start and maze.goal as the first and last points (joined to the
+// nearest cell centres when they are not centres themselves). Throws InputError if no path exists
+// (message starting with a JSON path, e.g. "/maze: ...").
+MazeRoute solve_route(const Environment& env, const MazeSpec& maze, const PathSpec& path);
+// solve_route(...).corners.
 Polyline reference_centreline(const Environment& env, const MazeSpec& maze, const PathSpec& path);
 
 // The largest corner radius (m) that keeps the rounded centreline of a generated maze lumen_width/2

@@ -2,12 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/env/centreline.h"
-#include "sim/env/environment.h"
-#include "sim/env/maze_solvers.h"
-#include "sim/env/trajectory.h"
 #include "sim/io/scene_reader.h"
-#include "sim/scene/input_error.h"
+#include "sim/run/compile.h"
+#include "sim/run/navigation.h"
 
 namespace vascsim {
 
@@ -39,13 +36,18 @@ json grid_json(const GridMaze& grid, const std::vector<Cell>& path) {
           {"path_cells", cells}};
 }
 
-std::string maze_document_unlabelled(const Scene& scene) {
-  const Environment env = build_environment(scene.maze);
-  const GridMaze grid = env.grid ? *env.grid : grid_from_walls(scene.maze);
-  const bool use_bfs = scene.maze.explicit_walls || scene.path.solver == PathSolver::kBreadthFirst;
-  const std::vector<Cell> cells = use_bfs ? solve_breadth_first(grid) : solve_wall_follower(grid);
-  const Polyline corners = reference_centreline(env, scene.maze, scene.path);
-  const Trajectory trajectory(corners, scene.path.corner_radius, scene.path.speed, scene.path.ramp_time);
+}  // namespace
+
+std::string maze_document(const Scene& scene) {
+  // The maze as a run compiles it: generated and solved once, the same route and trajectory.
+  const auto model = compile(scene);
+  const Navigation& nav = *model->navigation;
+  const Environment& env = nav.maze;
+  const GridMaze& grid = nav.route.grid;
+  const std::vector<Cell>& cells = nav.route.cells;
+  const bool use_bfs = nav.route.breadth_first;
+  const Polyline& corners = nav.route.corners;
+  const Trajectory& trajectory = *nav.trajectory;
 
   json walls = json::array();
   for (const auto& w : env.walls)
@@ -53,7 +55,7 @@ std::string maze_document_unlabelled(const Scene& scene) {
   json doc;
   doc["format"] = "vascsim-maze/1";
   Scene as_run = scene;  // with the duration a run of it would use
-  as_run.run.duration = scene.run.duration_for(trajectory.duration());
+  as_run.run.duration = model->scene.run.duration;
   doc["scene"] = json::parse(scene_to_json(as_run));
   doc["bounds"] = {point(env.bounds.min), point(env.bounds.max)};
   doc["lumen_width"] = env.lumen_width;
@@ -70,17 +72,6 @@ std::string maze_document_unlabelled(const Scene& scene) {
                  {"duration", trajectory.duration()},
                  {"samples", polyline(trajectory.sample(1e-4))}};
   return doc.dump(1) + "\n";
-}
-
-}  // namespace
-
-std::string maze_document(const Scene& scene) {
-  try {
-    return maze_document_unlabelled(scene);
-  } catch (const InputError& e) {
-    // The environment code knows the JSON path, not the file.
-    throw InputError((scene.file.empty() ? std::string("built-in scene") : scene.file) + ": " + e.what());
-  }
 }
 
 }  // namespace vascsim

@@ -12,15 +12,15 @@ namespace vascsim {
 
 std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
   auto nav = std::make_unique<Navigation>();
-  Environment closed;
   try {
-    closed = build_environment(scene.maze);
-    nav->corners = reference_centreline(closed, scene.maze, scene.path);
+    nav->maze = build_environment(scene.maze);
+    nav->route = solve_route(nav->maze, scene.maze, scene.path);
   } catch (const InputError& e) {
     // The environment code knows the JSON path, not the file.
-    throw InputError(scene.file + ": " + e.what());
+    throw InputError((scene.file.empty() ? std::string("built-in scene") : scene.file) + ": " + e.what());
   }
-  nav->entry = open_entry(closed, nav->corners, scene.rod.length, nav->environment);
+  nav->corners = nav->route.corners;
+  nav->entry = open_entry(nav->maze, nav->corners, scene.rod.length, nav->environment);
   nav->trajectory.emplace(nav->corners, scene.path.corner_radius, scene.path.speed, scene.path.ramp_time);
   scene.run.duration = scene.run.duration_for(nav->trajectory->duration());
   scene.run.duration_from_path = false;

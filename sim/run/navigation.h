@@ -12,6 +12,7 @@
 #include "sim/contact/contact_params.h"
 #include "sim/control/actuation.h"
 #include "sim/control/tip_controller.h"
+#include "sim/env/centreline.h"
 #include "sim/env/entry_port.h"
 #include "sim/env/environment.h"
 #include "sim/env/trajectory.h"
@@ -21,9 +22,11 @@
 namespace vascsim {
 
 struct Navigation {
+  Environment maze;         // the environment as generated (or given), before the port was cut
+  MazeRoute route;          // its solved route and sharp centreline, start to goal
   Environment environment;  // walls with the entry port cut open
   EntryPort entry;
-  Polyline corners;         // sharp centreline, start to goal
+  Polyline corners;         // route.corners
   std::optional<Trajectory> trajectory;
   ContactParams contact;
   // The walls' contact geometry, one per run: contact, friction and the gap statistics share it.
