@@ -1,6 +1,6 @@
 // Implicit wall contact and the tip magnet as element energies: forces are minus the gradient of
-// the energy (central finite differences), the Newton matrix matches the force Jacobian where the
-// PSD projection is inactive, and the step cap keeps every gap open.
+// the energy (central finite differences) and the step cap keeps every gap open. (The Newton
+// matrix of every module against its force Jacobian: force_module_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 
 #include "sim/contact/wall_contact.h"
 #include "sim/control/tip_magnet_energy.h"
+#include "tests/compare_matrices.h"
 
 namespace vascsim {
 namespace {
@@ -145,27 +146,6 @@ TEST(WallFriction, OpposesSlidingAtACommittedState) {
   EXPECT_EQ(tangential.tail<4>().norm(), 0.0) << "nodes 1 and 2 touch nothing";
 }
 
-TEST(WallContact, StiffnessMatchesForceJacobianOnAFlatWall) {
-  // Node against a straight wall: hess d = 0, so no projection, and K = -dF/dx exactly.
-  const RodModel rod = three_node_rod();
-  const ContactParams params{2e-3, 1e-3, 0.01, 0.0, 1e-4};
-  const std::vector<WallSegment> walls = {{Vec2(-1, -0.0025), Vec2(1, -0.0025), 0.0}};
-  WallContactModule module(walls, rod, params);
-  Eigen::VectorXd x(6);
-  x << 0.0, 0.0, 0.01, 0.003, 0.02, 0.01;
-  BandedMatrix k(6);
-  contact_force(module, x, &k);
-  const double h = 1e-9;
-  for (int j = 0; j < 2; ++j) {
-    Eigen::VectorXd up = x, down = x;
-    up[j] += h;
-    down[j] -= h;
-    const Eigen::VectorXd column = -(contact_force(module, up) - contact_force(module, down)) / (2 * h);
-    for (int i = 0; i < 2; ++i) EXPECT_NEAR(k.at(i, j), column[i], 1e-5 * std::abs(k.at(1, 1))) << i << "," << j;
-  }
-  EXPECT_GT(k.at(1, 1), 0.0);
-}
-
 TEST(WallContact, StepCapKeepsEveryGapOpen) {
   const RodModel rod = three_node_rod();
   const ContactParams params{2e-3, 5e-4, 0.01, 0.0, 1e-4};
@@ -203,9 +183,9 @@ TEST(TipMagnet, GradientAndHessianMatchFiniteDifferencesAndTorque) {
     const auto eu = tip_magnet_energy(up.head<2>(), up.tail<2>(), moment, field);
     const auto ed = tip_magnet_energy(down.head<2>(), down.tail<2>(), moment, field);
     EXPECT_NEAR(e.gradient[i], (eu.energy - ed.energy) / (2 * h), 1e-6 * e.gradient.norm());
-    EXPECT_LT((e.hessian.col(i) - (eu.gradient - ed.gradient) / (2 * h)).norm(), 1e-5 * e.hessian.norm());
+    EXPECT_TRUE(test::matrices_near(e.hessian.col(i), (eu.gradient - ed.gradient) / (2 * h), 1e-5 * e.hessian.norm()));
   }
-  EXPECT_LT((e.hessian - e.hessian.transpose()).norm(), 1e-12 * e.hessian.norm());
+  EXPECT_TRUE(test::matrices_near(e.hessian, e.hessian.transpose(), 1e-12 * e.hessian.norm()));
   // A uniform field exerts no net force, and the moment of the edge forces is the torque m x B.
   EXPECT_LT((e.gradient.head<2>() + e.gradient.tail<2>()).norm(), 1e-12);
   const Eigen::Vector2d t = (b - a).normalized();

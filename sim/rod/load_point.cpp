@@ -36,10 +36,10 @@ void PointLoadModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f
     force.segment<2>(2 * a) -= fb;
     force.segment<2>(2 * a + 2) += fb;
     if (stiffness) {
-      // K = -dF/dx = M d2theta/dx2; d2theta/de2 as in elastic_energy.h.
+      // K = -dF/dx = -M d2theta/dx2 (F = M dtheta/dx); d2theta/de2 as in elastic_energy.h.
       Eigen::Matrix2d h;
       h << 2.0 * e.x() * e.y(), e.y() * e.y() - e.x() * e.x(), e.y() * e.y() - e.x() * e.x(), -2.0 * e.x() * e.y();
-      h *= m / (r * r);
+      h *= -m / (r * r);
       Eigen::Matrix4d k;
       k << h, -h, -h, h;
       stiffness->add_block<4>(2 * a, k);

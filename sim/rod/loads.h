@@ -27,7 +27,7 @@ class GravityModule : public ForceModule {
 
 // Dead point forces and moments with a time profile (PointLoadSpec). A moment M on edge
 // e = x_b - x_a is the dead-load potential -M theta(e), theta = atan2(e_y, e_x):
-//   F_b = M (-e_y, e_x)/|e|^2 = -F_a,  K = M d2theta/de2 (mapped onto the two nodes).
+//   F_b = M (-e_y, e_x)/|e|^2 = -F_a,  K = -M d2theta/de2 (mapped onto the two nodes).
 // Channel force/external.
 class PointLoadModule : public ForceModule {
  public:
