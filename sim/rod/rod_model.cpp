@@ -49,6 +49,9 @@ RodModel build_rod_model(const RodSpec& spec, const ShapeSpec& shape, ClampKind 
   const double rest_turn = chord_turn(dl, shape.rest_curvature);
   m.rest_kappa = Eigen::VectorXd::Zero(n);
   m.rest_kappa.segment(1, n - 2).setConstant(2.0 * std::tan(0.5 * rest_turn));
+  m.stretch_stiffness = m.ea * m.rest_length.cwiseInverse();
+  m.bend_stiffness = Eigen::VectorXd::Zero(n);
+  for (int i = 1; i + 1 < n; ++i) m.bend_stiffness[i] = m.ei / m.voronoi[i];
 
   Vec2 first = shape.start;
   if (centred) first -= 0.5 * dl * Vec2(std::cos(shape.direction), std::sin(shape.direction));

@@ -23,6 +23,8 @@ struct RodModel {
   Eigen::VectorXd voronoi;      // (N), m, half of each adjacent edge: the node's share of the rod
   Eigen::VectorXd mass;         // (N), kg, lumped: linear_density * voronoi
   Eigen::VectorXd rest_kappa;   // (N), -, discrete rest curvature 2 tan(phi0/2); 0 at both ends
+  Eigen::VectorXd stretch_stiffness;  // (N-1), N/m, EA / l0 per edge
+  Eigen::VectorXd bend_stiffness;     // (N), N m, EI / dl_voronoi per node (0 at both ends: no hinge)
   Eigen::VectorXd x_initial;    // (2N), m, node positions at t = 0, interleaved x0 y0 x1 y1 ...
 };
 
