@@ -6,6 +6,7 @@
 
 #include "sim/contact/barrier.h"
 #include "sim/contact/point_segment_distance.h"
+#include "tests/compare_matrices.h"
 
 namespace vascsim {
 namespace {
@@ -29,9 +30,9 @@ void check_against_finite_differences(const Vec6& y) {
     fd_gradient[i] = (plus.distance - minus.distance) / (2 * h);
     fd_hessian.col(i) = (plus.gradient - minus.gradient) / (2 * h);
   }
-  EXPECT_LT((fd_gradient - at.gradient).norm(), 1e-7 * (1 + at.gradient.norm())) << "at " << y.transpose();
-  EXPECT_LT((fd_hessian - at.hessian).norm(), 1e-5 * (1 + at.hessian.norm())) << "at " << y.transpose();
-  EXPECT_LT((at.hessian - at.hessian.transpose()).norm(), 1e-12 * (1 + at.hessian.norm()));
+  EXPECT_TRUE(test::matrices_near(at.gradient, fd_gradient, 1e-7 * (1 + at.gradient.norm()))) << "at " << y.transpose();
+  EXPECT_TRUE(test::matrices_near(at.hessian, fd_hessian, 1e-5 * (1 + at.hessian.norm()))) << "at " << y.transpose();
+  EXPECT_TRUE(test::matrices_near(at.hessian, at.hessian.transpose(), 1e-12 * (1 + at.hessian.norm())));
 }
 
 TEST(PointSegmentDistance, KnownValuesInEachCase) {

@@ -10,6 +10,7 @@
 
 #include "sim/contact/wall_contact.h"
 #include "sim/rod/loads.h"
+#include "sim/run/compile.h"
 #include "sim/step/stepper.h"
 
 namespace vascsim {
@@ -37,7 +38,7 @@ struct FloorRig {
     scene.solver.dt = 1e-3;
     scene.solver.rel_tol = 1e-9;
     scene.contact.friction = mu;
-    model = build_model(scene);
+    model = *compile(scene);
     params = resolve_contact_params(scene.contact, model.rod);
     // The floor's surface sits half an activation distance below the rod's surface.
     const double floor = -(model.rod.outer_radius + 0.5 * params.g_hat);

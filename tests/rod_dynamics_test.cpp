@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "sim/rod/loads.h"
+#include "sim/run/compile.h"
 #include "sim/step/model.h"
 #include "sim/step/newton.h"
 #include "sim/step/stepper.h"
@@ -37,7 +38,7 @@ struct Oscillator {
   }
   // Displacement of node 2 divided by the amplitude after `steps` steps of dt.
   double run(double dt, int steps, double* velocity = nullptr) const {
-    const Model model = build_model(scene);
+    const Model model = *compile(scene);
     State s = initial_state(model);
     s.x[4] += amplitude;
     Workspace ws(model);
@@ -91,7 +92,7 @@ TEST(RodDynamics, Bdf2IsSecondOrder) { EXPECT_NEAR(measured_order(Scheme::kBdf2)
 // for modes 2 and 3, so those are checked at N = 81 where the same estimate gives 3e-4 and 8e-4.
 Eigen::VectorXd cantilever_frequencies(int nodes) {
   const Scene scene = test::cantilever(nodes);
-  const Model model = build_model(scene);
+  const Model model = *compile(scene);
   State s = initial_state(model);
   Workspace ws(model);
   std::fill(ws.fixed.begin(), ws.fixed.end(), 0);
@@ -145,7 +146,7 @@ struct FallingRod {
 
 TEST(RodDynamics, QuadraticDragTerminalVelocity) {
   const FallingRod f;
-  const Model model = build_model(f.scene);
+  const Model model = *compile(f.scene);
   State s = initial_state(model);
   Workspace ws(model);
   for (int i = 0; i < 200; ++i) ASSERT_TRUE(step_once(model, s, ws, Controls{}, 0.01).ok);
@@ -159,7 +160,7 @@ TEST(RodDynamics, QuadraticDragTerminalVelocity) {
 
 TEST(RodDynamics, QuadraticDragBackwardEulerTransientIsExact) {
   const FallingRod f;
-  const Model model = build_model(f.scene);
+  const Model model = *compile(f.scene);
   State s = initial_state(model);
   Workspace ws(model);
   const double r = f.scene.rod.outer_radius, g = 9.81, h = 0.005;
@@ -183,7 +184,7 @@ TEST(RodDynamics, CrossFlowDragTerminalVelocityPerDirection) {
   const double g = 9.81, angle = M_PI / 6.0, cd_t = 0.05;
   f.scene.loads.gravity.acceleration = g * Vec2(std::cos(angle), -std::sin(angle));
   f.scene.loads.drag.tangential_coefficient = cd_t;
-  const Model model = build_model(f.scene);
+  const Model model = *compile(f.scene);
   State s = initial_state(model);
   Workspace ws(model);
   for (int i = 0; i < 400; ++i) ASSERT_TRUE(step_once(model, s, ws, Controls{}, 0.01).ok);
@@ -205,7 +206,7 @@ TEST(RodDynamics, CrossFlowDragStiffnessIsTheVelocityJacobian) {
   scene.has_maze = false;
   scene.rod.nodes = 5;
   scene.loads.drag.enabled = true;
-  const Model model = build_model(scene);
+  const Model model = *compile(scene);
   const QuadraticDragModule drag(model.rod, scene.loads.drag);
   State start = initial_state(model);
   for (int i = 0; i < model.nodes(); ++i) start.x[2 * i + 1] = 0.02 * std::sin(3.0 * i);  // bent
@@ -245,7 +246,7 @@ TEST(RodDynamics, ExternalForceSign) {
   PointLoadSpec tip;
   tip.force = Vec2(2e-3, -1e-3);
   scene.loads.point_loads.push_back(tip);
-  const Model model = build_model(scene);
+  const Model model = *compile(scene);
   State s = initial_state(model);
   Workspace ws(model);
   const double h = 1e-3;
@@ -267,7 +268,7 @@ TEST(RodDynamics, PrescribedNodeFollowsItsMotion) {
   drive.node = -1;
   drive.velocity = Vec2(0.0, 0.05);
   scene.boundary.prescribed.push_back(drive);
-  const Model model = build_model(scene);
+  const Model model = *compile(scene);
   State s = initial_state(model);
   const Vec2 start = s.position(7);
   Workspace ws(model);
@@ -296,7 +297,7 @@ TEST(RodDynamics, FailedStepKeepsStateAndAdaptiveRetrySucceeds) {
   scene.loads.point_loads.push_back(tip);
   scene.solver.adaptive = false;
   {
-    const Model model = build_model(scene);
+    const Model model = *compile(scene);
     State s = initial_state(model);
     const State before = s;
     Workspace ws(model);
@@ -308,7 +309,7 @@ TEST(RodDynamics, FailedStepKeepsStateAndAdaptiveRetrySucceeds) {
     EXPECT_EQ(s.t, 0.0);
   }
   scene.solver.adaptive = true;
-  const Model model = build_model(scene);
+  const Model model = *compile(scene);
   State s = initial_state(model);
   Workspace ws(model);
   const StepReport r = step(model, s, ws, Controls{}, 0.2);

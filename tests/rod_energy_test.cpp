@@ -11,6 +11,7 @@
 #include "sim/rod/elastic_energy.h"
 #include "sim/rod/rod_model.h"
 #include "sim/step/elastic_assembly.h"
+#include "tests/compare_matrices.h"
 
 namespace vascsim {
 namespace {
@@ -41,12 +42,9 @@ Eigen::VectorXd fd_gradient(F f, Eigen::VectorXd q, double h) {
   return g;
 }
 
+// Relative to the expected values' size (at least 1).
 ::testing::AssertionResult close(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double tol) {
-  const double err = (a - b).cwiseAbs().maxCoeff();
-  const double scale = std::max(1.0, b.cwiseAbs().maxCoeff());
-  if (err <= tol * scale) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "max error " << err << " (tol " << tol * scale << ")\n got:\n"
-                                       << a << "\n expected:\n" << b;
+  return test::matrices_near(a, b, tol * std::max(1.0, b.cwiseAbs().maxCoeff()));
 }
 
 TEST(StretchEnergy, GradientAndHessianMatchFiniteDifferences) {

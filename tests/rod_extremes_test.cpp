@@ -5,6 +5,7 @@
 // the sanitizers.
 #include <gtest/gtest.h>
 
+#include "sim/run/compile.h"
 #include "sim/step/model.h"
 #include "sim/step/statics.h"
 #include "sim/step/stepper.h"
@@ -26,7 +27,7 @@ Scene loaded_cantilever(int nodes, double alpha) {
 
 // Steps until `steps` succeed or one fails; checks the state stays finite and failures explain.
 void run_case(const Scene& scene, double dt, int steps, const char* label) {
-  const Model model = build_model(scene);
+  const Model model = *compile(scene);
   State s = initial_state(model);
   Workspace ws(model);
   const Controls controls;
@@ -65,7 +66,7 @@ TEST(RodExtremes, NodeCounts) {
 TEST(RodExtremes, LargeStaticLoad) {
   Scene s = loaded_cantilever(41, 20.0);
   s.solver.mode = SolveMode::kStatic;
-  const Model model = build_model(s);
+  const Model model = *compile(s);
   State state = initial_state(model);
   Workspace ws(model);
   const StaticReport r = solve_static(model, state, ws, Controls{});

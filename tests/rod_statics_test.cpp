@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "sim/run/compile.h"
 #include "sim/step/banded_ldlt.h"
 #include "sim/step/model.h"
 #include "sim/step/newton.h"
@@ -27,7 +28,7 @@ Tip solve_with_tip_load(Scene scene, const Vec2& force, double moment = 0.0) {
   tip.force = force;
   tip.moment = moment;
   scene.loads.point_loads.push_back(tip);
-  const Model model = build_model(scene);
+  const Model model = *compile(scene);
   State state = initial_state(model);
   Workspace ws(model);
   const StaticReport r = solve_static(model, state, ws, Controls{});
@@ -120,7 +121,7 @@ TEST(RodStatics, BucklingLoadOfClampedFreeColumn) {
     PointLoadSpec tip;
     tip.force = Vec2(-p, 0.0);
     s.loads.point_loads.push_back(tip);
-    const Model model = build_model(s);
+    const Model model = *compile(s);
     State state = initial_state(model);
     Workspace ws(model);
     const StaticReport r = solve_static(model, state, ws, Controls{});
@@ -146,7 +147,7 @@ TEST(RodStatics, UnconstrainedRodFailsWithClearMessage) {
   PointLoadSpec tip;
   tip.force = Vec2(0.0, 1e-3);
   scene.loads.point_loads.push_back(tip);
-  const Model model = build_model(scene);
+  const Model model = *compile(scene);
   State state = initial_state(model);
   Workspace ws(model);
   const StaticReport r = solve_static(model, state, ws, Controls{});

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/io/scene_reader.h"
+#include "sim/run/compile.h"
 #include "sim/scene/input_error.h"
 #include "sim/step/model.h"
 
@@ -51,7 +52,7 @@ TEST(SolverSections, ErrorsNameTheJsonPath) {
   // Node indices are checked against the rod when the model is built.
   const Scene s = read_scene_text(R"({"maze": null, "rod": {"nodes": 10}, "boundary": {"pinned": [12]}})", "bad.json");
   try {
-    build_model(s);
+    compile(s);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bad.json: /boundary/pinned/0"), std::string::npos) << e.what();
@@ -62,7 +63,7 @@ TEST(SolverSections, CantileverSceneLoads) {
   const Scene s = read_scene_file(VASCSIM_SOURCE_DIR "/scenes/cantilever.json");
   EXPECT_FALSE(s.has_maze);
   EXPECT_EQ(s.boundary.clamp, ClampKind::kCentred);
-  const Model m = build_model(s);
+  const Model m = *compile(s);
   EXPECT_EQ(m.constraints.size(), 2u);
   EXPECT_EQ(m.forces.size(), 2u);  // point load and damping; nothing else is paid for
 }

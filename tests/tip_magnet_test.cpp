@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "sim/control/tip_magnet_module.h"
+#include "sim/run/compile.h"
 #include "sim/step/statics.h"
 #include "tests/rod_test_scenes.h"
 
@@ -15,7 +16,7 @@ namespace {
 
 double tip_angle_for_beta_one(int nodes) {
   Scene scene = test::cantilever(nodes);
-  Model model = build_model(scene);
+  Model model = *compile(scene);
   const double ei = test::bending_stiffness(scene.rod);
   const double field = 1.0;                            // T, along +y (psi = 90 degrees)
   const double moment = ei / (scene.rod.length * field);  // beta = m B L / EI = 1

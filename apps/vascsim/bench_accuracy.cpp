@@ -15,6 +15,7 @@
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
+#include "sim/run/compile.h"
 #include "sim/scene/input_error.h"
 #include "sim/step/model.h"
 #include "sim/step/statics.h"
@@ -80,7 +81,7 @@ Row dynamic_row(int nodes, Scheme scheme, double dt, double rel_tol, double dura
   row.dt = dt;
   row.nodes = nodes;
   row.rel_tol = rel_tol;
-  const Model model = build_model(cantilever(nodes, scheme, dt, rel_tol, p));
+  const Model model = *compile(cantilever(nodes, scheme, dt, rel_tol, p));
   State state = initial_state(model);
   Workspace ws(model);
   const Controls controls;
@@ -114,7 +115,7 @@ Row static_row(int nodes, double rel_tol) {
   const double ei = rod.youngs_modulus * M_PI * (ro2 * ro2 - ri2 * ri2) / 4, l = rod.length;
   Scene scene = cantilever(nodes, Scheme::kBackwardEuler, 1e-3, rel_tol, ei / (l * l));
   scene.solver.mode = SolveMode::kStatic;
-  const Model model = build_model(scene);
+  const Model model = *compile(scene);
   State state = initial_state(model);
   Workspace ws(model);
   const auto start = Clock::now();

@@ -8,6 +8,7 @@
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
+#include "sim/run/compile.h"
 #include "sim/step/banded_ldlt.h"
 #include "sim/step/model.h"
 #include "sim/step/newton.h"
@@ -36,7 +37,7 @@ Scene paper_rod(int nodes, Scheme scheme) {
 double time_iteration(int nodes, double budget, bool block) {
   Scene scene = paper_rod(nodes, Scheme::kBackwardEuler);
   scene.shape.initial_curvature = 2.0;  // bent: every element does real work
-  const Model model = build_model(scene);
+  const Model model = *compile(scene);
   const State state = initial_state(model);
   Workspace ws(model);
   ws.x_hat = state.x;
@@ -72,7 +73,7 @@ struct StepTiming {
 };
 
 StepTiming time_steps(int nodes, Scheme scheme, double simulated) {
-  const Model model = build_model(paper_rod(nodes, scheme));
+  const Model model = *compile(paper_rod(nodes, scheme));
   State state = initial_state(model);
   Workspace ws(model);
   const Controls controls;

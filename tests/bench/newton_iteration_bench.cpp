@@ -3,6 +3,7 @@
 // <= 120 ns per node per iteration at N = 1000; >= 60000 steps/s at N = 50 (see docs/solver.md).
 #include <benchmark/benchmark.h>
 
+#include "sim/run/compile.h"
 #include "sim/step/banded_ldlt.h"
 #include "sim/step/model.h"
 #include "sim/step/newton.h"
@@ -25,7 +26,7 @@ Scene free_rod(int nodes) {
 }
 
 void BM_NewtonIteration(benchmark::State& st) {
-  const Model model = build_model(free_rod(static_cast<int>(st.range(0))));
+  const Model model = *compile(free_rod(static_cast<int>(st.range(0))));
   State state = initial_state(model);
   Workspace ws(model);
   ws.x_hat = state.x;
@@ -52,7 +53,7 @@ void BM_NewtonIteration(benchmark::State& st) {
 BENCHMARK(BM_NewtonIteration)->Args({1000, 0})->Args({1000, 1});  // scalar, block LDL^T
 
 void BM_BackwardEulerStep(benchmark::State& st) {
-  const Model model = build_model(free_rod(static_cast<int>(st.range(0))));
+  const Model model = *compile(free_rod(static_cast<int>(st.range(0))));
   State state = initial_state(model);
   Workspace ws(model);
   Controls controls;
