@@ -2,7 +2,8 @@
 // entry port opened, the rod placed straight behind the start so that its tip (the last node)
 // sits on the path's start, the reference trajectory, the tip controller's plant model, and the
 // force modules the scene asks for: actuation (force, kinematic or field), wall contact,
-// friction. Built once per run; immutable afterwards, like the Model.
+// friction. The two steps of compile() (sim/run/compile.h) that concern the maze; the Model
+// holds the result, immutable afterwards.
 #pragma once
 
 #include <memory>
@@ -38,7 +39,8 @@ struct Navigation {
 };
 
 // Resolves the environment and path of `scene` and places the rod at the entry: overwrites
-// scene.shape (start, direction, straight). Throws InputError if start and goal do not connect.
+// scene.shape (start, direction, straight) and the run's duration. compile() calls it on its
+// own copy of the scene. Throws InputError if start and goal do not connect.
 std::unique_ptr<Navigation> prepare_navigation(Scene& scene);
 // Adds the navigation force modules to a Model built from the prepared scene, and fills the
 // parts of `navigation` that depend on the compiled rod (contact parameters, plant model).
