@@ -2,6 +2,7 @@
 // truncated log, unwritable destination, bad options) exits 2 with a message naming the
 // problem and leaves no file under a final name, and existing outputs need --force.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include "render/image_diff.h"
 #include "render/png_writer.h"
@@ -124,6 +125,47 @@ TEST(DiffCli, ExitCodesAndHeatMap) {
   write_image_png(dir / "c.png", c);
   EXPECT_EQ(run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "c.png") + "'", dir).exit_code, 2);
   EXPECT_EQ(run_vascsim("diff '" + (dir / "a.png") + "' --tolerance x", dir).exit_code, 2);
+}
+
+// --out follows the rules of every other output: no existing file replaced without --force, and
+// never an input or anything but a regular file, even with --force.
+TEST(DiffCli, OutNeverReplacesWithoutForceNorAnInputNorADevice) {
+  ScratchDir dir("cli_diff_out");
+  Image a;
+  a.width = 8;
+  a.height = 4;
+  a.rgb.assign(8 * 4 * 3, 200);
+  Image b = a;
+  b.rgb[0] = 10;
+  write_image_png(dir / "a.png", a);
+  write_image_png(dir / "b.png", b);
+  const std::string a_bytes = testing::read_bytes(dir / "a.png");
+  std::ofstream(dir / "notes.txt") << "mine";
+  const std::string diff = "diff '" + (dir / "a.png") + "' '" + (dir / "b.png") + "' --out ";
+  auto r = run_vascsim(diff + "'" + (dir / "notes.txt") + "'", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
+  EXPECT_EQ(testing::read_bytes(dir / "notes.txt"), "mine");
+  r = run_vascsim(diff + "'" + (dir / "notes.txt") + "' --force", dir);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NO_THROW(load_png(dir / "notes.txt")) << "with --force the heat map replaces it";
+  for (const std::string input : {"a.png", "b.png"}) {
+    r = run_vascsim(diff + "'" + (dir / input) + "' --force", dir);
+    EXPECT_EQ(r.exit_code, 2) << input;
+    EXPECT_NE(r.err.find("input"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(testing::read_bytes(dir / "a.png"), a_bytes);
+  // Special files are never renamed over, even by root with --force (it once replaced /dev/full).
+  // A FIFO and a directory in the scratch directory stand for them, so a regression breaks nothing.
+  ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0600), 0);
+  fs::create_directories(dir / "folder");
+  for (const std::string special : {"fifo", "folder"}) {
+    r = run_vascsim(diff + "'" + (dir / special) + "' --force", dir);
+    EXPECT_EQ(r.exit_code, 2) << special << ": " << r.err;
+    EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << r.err;
+  }
+  EXPECT_TRUE(fs::is_fifo(dir / "fifo"));
+  EXPECT_TRUE(fs::is_directory(dir / "folder"));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
 #include "render/image_diff.h"
+#include "sim/io/output_file.h"
 
 namespace vascsim::cli {
 
@@ -18,6 +19,7 @@ const std::vector<OptionSpec>& diff_options() {
       {"tolerance", "T", "largest per-channel difference (0..255) a pixel may have (default 0)"},
       {"max-pixels", "N", "number of pixels allowed over the tolerance (default 0)"},
       {"out", "FILE", "write a heat map of the differences as PNG"},
+      {"force", "", "replace an existing --out file (never an input, never a non-regular file)"},
       {"help", "", "show this help"},
   };
   return options;
@@ -37,6 +39,7 @@ int run_diff_command(int argc, char** argv) {
   const int tolerance = static_cast<int>(args.integer("tolerance", 0, 0, 255));
   const long max_pixels = static_cast<long>(args.integer("max-pixels", 0, 0, 1LL << 40));
   const auto out = args.value("out");
+  if (out) check_replaceable_output(*out, args.flag("force"), args.positional());
   const render::Image a = render::load_png(args.positional()[0]);
   const render::Image b = render::load_png(args.positional()[1]);
   render::Image heat;

@@ -22,6 +22,18 @@ void check_output_path(const std::string& path, bool overwrite, const std::strin
     throw InputError(path + ": directory " + parent.string() + " does not exist");
 }
 
+void check_replaceable_output(const std::string& path, bool overwrite, const std::vector<std::string>& inputs,
+                              const std::string& option_hint) {
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(path, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw InputError(path + ": exists and is not a regular file; refusing to replace it");
+  for (const auto& input : inputs)
+    if (fs::exists(path, ec) && fs::equivalent(path, input, ec))
+      throw InputError(path + ": is the input " + input + "; refusing to write over it");
+  check_output_path(path, overwrite, option_hint);
+}
+
 std::string temporary_sibling(const std::string& path) {
   const fs::path p(path);
   return (p.parent_path() / ("." + p.filename().string() + ".tmp-" + std::to_string(::getpid()))).string();
