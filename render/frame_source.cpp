@@ -68,16 +68,38 @@ FrameSource::FrameSource(const std::string& run_path) : log_path_(log_path_of(ru
   tip_error_ = require_layout(h, channel::kTipError, ChannelLayout::kScalars, log_path_);
   frame_count_ = reader_.frame_count();
   if (frame_count_ == 0) throw InputError(log_path_ + ": frame log has no complete frame");
-  first_time_ = reader_.time_of(0);
-  last_time_ = reader_.time_of(frame_count_ - 1);
+  first_time_ = checked_time(0);
+  last_time_ = checked_time(frame_count_ - 1);
+  if (last_time_ < first_time_) throw bad_time(frame_count_ - 1, last_time_, "before the first frame's time");
 }
 
 bool FrameSource::refresh() {
   const std::size_t n = reader_.frame_count();
   if (n <= frame_count_) return false;
+  const double last = checked_time(n - 1);
+  if (last < last_time_) throw bad_time(n - 1, last, "before an earlier frame's time");
   frame_count_ = n;
-  last_time_ = reader_.time_of(n - 1);
+  last_time_ = last;
   return true;
+}
+
+void FrameSource::check_times(std::size_t end) const {
+  for (; times_checked_ < std::min(end, frame_count_); ++times_checked_) {
+    const double t = checked_time(times_checked_);
+    if (times_checked_ > 0 && t < last_checked_time_) throw bad_time(times_checked_, t, "before the previous frame's time");
+    last_checked_time_ = t;
+  }
+}
+
+InputError FrameSource::bad_time(std::size_t i, double t, const char* why) const {
+  return InputError(log_path_ + ": frame " + std::to_string(i) + " has time " + std::to_string(t) +
+                    " s, " + why + " (times must be finite, >= 0 and non-decreasing)");
+}
+
+double FrameSource::checked_time(std::size_t i) const {
+  const double t = reader_.time_of(i);
+  if (!std::isfinite(t) || t < 0) throw bad_time(i, t, "not a finite time >= 0");
+  return t;
 }
 
 Vec2 FrameSource::tip_of(std::size_t i) const {
@@ -112,6 +134,7 @@ void FrameSource::unpack(const std::vector<double>& r, FrameState& out) const {
 
 void FrameSource::frame(std::size_t i, FrameState& out) const {
   reader_.read(i, record_a_);
+  if (!std::isfinite(record_a_[0]) || record_a_[0] < 0) throw bad_time(i, record_a_[0], "not a finite time >= 0");
   unpack(record_a_, out);
 }
 
@@ -120,6 +143,7 @@ void FrameSource::at_time(double t, FrameState& out) const {
   frame(i, out);
   if (i + 1 >= frame_count_ || t <= out.time) return;
   frame(i + 1, next_);
+  if (next_.time < out.time) throw bad_time(i + 1, next_.time, "before the previous frame's time");
   const double span = next_.time - out.time;
   if (span <= 0) return;
   const double w = std::clamp((t - out.time) / span, 0.0, 1.0);

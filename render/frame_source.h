@@ -10,6 +10,7 @@
 
 #include "sim/io/log_metadata.h"
 #include "sim/log/frame_log.h"
+#include "sim/scene/input_error.h"
 
 namespace vascsim::render {
 
@@ -37,8 +38,9 @@ struct FrameState {
 class FrameSource {
  public:
   // Opens RUN_DIR/frames.vlog, or the log file itself if `run_path` is a file. Throws
-  // InputError naming the file if it is missing, not a log, has no position channel or no
-  // complete frame.
+  // InputError naming the file if it is missing, not a log, has no position channel, no
+  // complete frame, or a first or last time that is not finite, negative or out of order;
+  // every frame read later is checked the same way.
   explicit FrameSource(const std::string& run_path);
 
   const std::string& log_path() const { return log_path_; }
@@ -55,6 +57,16 @@ class FrameSource {
   double time_of(std::size_t i) const { return reader_.time_of(i); }
   // Logged frame i's raw record: time, then every channel's values (docs/frame-log.md).
   void record(std::size_t i, std::vector<double>& out) const { reader_.read(i, out); }
+  // Checks that frames [0, end) have finite, non-negative, non-decreasing times (each frame is
+  // read once over the source's life); throws InputError naming the first bad frame.
+  void check_times(std::size_t end) const;
+  // Frames [0, end) were checked elsewhere (a reader that streams every time, like the replay
+  // server's index), the last of them at time `last` (s).
+  void times_checked_elsewhere(std::size_t end, double last) const {
+    if (end <= times_checked_) return;
+    times_checked_ = end;
+    last_checked_time_ = last;
+  }
   // The tip (last node) of logged frame i, reading only its two values.
   Vec2 tip_of(std::size_t i) const;
   // Re-polls the log for frames appended since (a run still writing it). Returns true if the
@@ -64,6 +76,9 @@ class FrameSource {
 
  private:
   void unpack(const std::vector<double>& record, FrameState& out) const;
+  // Frame i's time, refused (InputError naming the log and the frame) unless finite and >= 0.
+  double checked_time(std::size_t i) const;
+  InputError bad_time(std::size_t i, double t, const char* why) const;
 
   std::string log_path_;
   FrameLogReader reader_;
@@ -72,6 +87,8 @@ class FrameSource {
   double first_time_ = 0, last_time_ = 0;
   int position_ = -1, actuation_ = -1, contact_ = -1, friction_ = -1, drag_ = -1, reference_ = -1, tip_error_ = -1;
   mutable std::vector<double> record_a_, record_b_;
+  mutable std::size_t times_checked_ = 0;  // frames [0, times_checked_) passed check_times
+  mutable double last_checked_time_ = 0;   // s
   mutable FrameState next_;
 };
 

@@ -130,7 +130,12 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   }
   if (o.mp4_path.empty() && o.png_dir.empty()) return report;
 
-  const auto count = static_cast<std::size_t>(std::floor((t1 - t0) * o.fps / o.speed + 1e-9)) + 1;
+  const double frames = std::floor((t1 - t0) * o.fps / o.speed + 1e-9) + 1;
+  if (frames > kMaxVideoFrames)
+    throw InputError("the time range " + std::to_string(t0) + " .. " + std::to_string(t1) + " s at " + std::to_string(o.fps) +
+                     " fps and speed " + std::to_string(o.speed) + " makes " + std::to_string(frames) +
+                     " frames, more than " + std::to_string(kMaxVideoFrames) + ": choose a shorter --from/--to or a higher --speed");
+  const auto count = static_cast<std::size_t>(frames);
   const View& view = o.view;
   std::unique_ptr<VideoEncoder> video;
   if (!o.mp4_path.empty()) {

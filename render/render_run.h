@@ -42,6 +42,9 @@ struct RenderReport {
   std::vector<std::string> plots;
 };
 
+// The most video or PNG frames one render writes (about 3.9 days of 30 fps video).
+inline constexpr double kMaxVideoFrames = 1e7;
+
 // Throws InputError (exit code 2 in the CLI) for a missing or bad log, bad options, an
 // existing output without `force`, or an unwritable destination; no output file ever appears
 // under its final name unless complete.

@@ -1,5 +1,7 @@
 #include "render/tip_trail.h"
 
+#include <algorithm>
+
 #include "render/frame_source.h"
 
 namespace vascsim::render {
@@ -19,7 +21,11 @@ const std::vector<Vec2>& TipTrail::points(Vec2 current) {
 
 std::size_t frames_through(const FrameSource& source, double t) {
   const std::size_t i = source.frame_at_time(t);
-  return source.time_of(i) <= t ? i + 1 : 0;
+  const std::size_t end = source.time_of(i) <= t ? i + 1 : 0;
+  // The frames a trail is built from are read in order anyway: their times must be too, or the
+  // binary search above could have stopped anywhere.
+  source.check_times(std::min(end + 1, source.frame_count()));
+  return end;
 }
 
 }  // namespace vascsim::render

@@ -3,8 +3,10 @@
 // a record's values.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 #include "render/frame_source.h"
 #include "render_test_util.h"
@@ -66,6 +68,69 @@ TEST(FrameSourceChannels, ACountThatContradictsTheLayoutIsRefusedNamingTheChanne
   }
   write_log(path, 50, channels, 3, 1);  // the count it should have
   EXPECT_NO_THROW(FrameSource{path});
+}
+
+}  // namespace
+}  // namespace vascsim::render
+
+namespace vascsim::render {
+namespace {
+
+using testing::ScratchDir;
+namespace fs = std::filesystem;
+
+// A 3-node log whose frame k has time times[k].
+std::string log_with_times(const ScratchDir& dir, const std::string& name, const std::vector<double>& times) {
+  const std::string path = dir / name;
+  FrameLogHeader h;
+  h.node_count = 3;
+  h.channels = {{"position", "m", ChannelLayout::kNodeVectors, 6}};
+  h.metadata = write_log_metadata(synthetic_metadata(SyntheticLogSpec{}));
+  FrameLogWriter w(path, h);
+  for (std::size_t k = 0; k < times.size(); ++k) w.append(times[k], {0.0, 0.0, 0.01, 0.0, 0.02, 0.001 * k});
+  return path;
+}
+
+// Times must be finite, >= 0 and non-decreasing: a NaN, a negative or a decreasing time once made
+// `vascsim render` compute a huge or NaN frame count and write PNGs until the disk was full.
+TEST(FrameSourceTimes, BadFirstOrLastTimesAreRefusedOnOpen) {
+  ScratchDir dir("source_times");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const struct {
+    std::vector<double> times;
+    std::string frame;
+  } cases[] = {{{nan, 0.1, 0.2}, "frame 0"}, {{0.0, 0.1, nan}, "frame 2"}, {{-1e10, 0.1, 0.2}, "frame 0"},
+               {{0.5, 0.6, 0.2}, "frame 2"}, {{0.0, 0.1, INFINITY}, "frame 2"}};
+  for (const auto& c : cases) {
+    const std::string log = log_with_times(dir, "bad.vlog", c.times);
+    try {
+      FrameSource source(log);
+      ADD_FAILURE() << "accepted times " << c.times[0] << ", " << c.times[1] << ", " << c.times[2];
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(c.frame), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(log), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(FrameSourceTimes, RenderStopsAtTheFirstBadFrameAndRefusesHugeRanges) {
+  ScratchDir dir("render_times");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // A NaN or a step back in the middle passes the open checks and stops the render where read.
+  for (const double bad : {nan, 0.15}) {
+    const std::string log = log_with_times(dir, "middle.vlog", {0.0, 0.1, 0.2, bad, 0.4, 0.5});
+    fs::remove_all(dir / "png");
+    auto r = testing::run_vascsim("render '" + log + "' --png-dir '" + (dir / "png") + "' --fps 10 --width 64 --height 64", dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("frame 3"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "png/frame_000005.png")) << "it rendered past the bad frame";
+  }
+  // Finite but absurd: 0 .. 1e9 s at 30 fps would be 3e10 frames.
+  const std::string far = log_with_times(dir, "far.vlog", {0.0, 1e9});
+  auto r = testing::run_vascsim("render '" + far + "' --png-dir '" + (dir / "far") + "' --width 64 --height 64", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--speed"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "far/frame_000000.png"));
 }
 
 }  // namespace

@@ -152,10 +152,14 @@ void ReplayRun::extend_track() {
   const std::size_t tip = h.channel_offset(h.find_channel(channel::kPosition)) + 2 * (h.node_count - 1);
   times_.reserve(source_->frame_count());
   tips_.reserve(source_->frame_count());
-  scan(times_.size(), [&](std::size_t, const double* r) {
+  scan(times_.size(), [&](std::size_t i, const double* r) {
+    if (!std::isfinite(r[0]) || r[0] < 0 || (!times_.empty() && r[0] < times_.back()))
+      throw InputError(source_->log_path() + ": frame " + std::to_string(i) + " has time " + std::to_string(r[0]) +
+                       " s (times must be finite, >= 0 and non-decreasing)");
     times_.push_back(r[0]);
     tips_.emplace_back(r[tip], r[tip + 1]);
   });
+  if (!times_.empty()) source_->times_checked_elsewhere(times_.size(), times_.back());
 }
 
 const std::vector<double>& ReplayRun::times() {
