@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "apps/replay/request_params.h"
+#include "sim/io/json_fields.h"
 #include "sim/io/output_file.h"
 #include "sim/scene/input_error.h"
 
@@ -25,8 +26,13 @@ json load_bookmarks(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
-  const json doc = json::parse(text.str(), nullptr, false);
-  if (doc.is_discarded() || !doc.is_object() || doc.value("format", "") != "vascsim-bookmarks/1" ||
+  json doc;
+  try {
+    doc = io::parse_json_strictly(text.str(), path);
+  } catch (const InputError&) {
+    throw InputError(path + ": not a vascsim-bookmarks/1 file; left untouched");
+  }
+  if (!doc.is_object() || doc.value("format", "") != "vascsim-bookmarks/1" ||
       !doc.contains("bookmarks") || !doc["bookmarks"].is_array())
     throw InputError(path + ": not a vascsim-bookmarks/1 file; left untouched");
   return doc["bookmarks"];

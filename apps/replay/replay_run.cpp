@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "sim/io/json_fields.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::replay {
@@ -67,8 +68,11 @@ void ReplayRun::refresh() {
   std::stringstream text;
   text << in.rdbuf();
   // The summary is written atomically (temporary name, then rename), so it is complete or absent.
-  summary_ = json::parse(text.str(), nullptr, false);
-  if (summary_.is_discarded()) summary_ = json{{"error", "summary.json is not valid JSON"}};
+  try {
+    summary_ = io::parse_json_strictly(text.str(), summary_path.string());
+  } catch (const InputError& e) {
+    summary_ = json{{"error", e.what()}};
+  }
   growing_ = false;
   source_->refresh();
 }

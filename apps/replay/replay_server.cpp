@@ -16,6 +16,7 @@
 #include "apps/replay/request_params.h"
 #include "apps/replay/series.h"
 #include "render/png_writer.h"
+#include "sim/io/json_fields.h"
 #include "render/view_frame.h"
 #include "sim/scene/input_error.h"
 
@@ -260,8 +261,12 @@ struct ReplayServer::Impl {
     ReplayRun& run = run_of(p);
     json list;
     if (add) {
-      const json body = json::parse(req.body, nullptr, false);
-      if (body.is_discarded()) throw ParamError("body", "expected JSON {\"name\", \"t\", \"view\"}");
+      json body;
+      try {
+        body = io::parse_json_strictly(req.body, "request body");
+      } catch (const InputError& e) {
+        throw ParamError("body", std::string(e.what()) + "; expected JSON {\"name\", \"t\", \"view\"}");
+      }
       list = add_bookmark(run.bookmarks_path(), body);
     } else {
       list = load_bookmarks(run.bookmarks_path());

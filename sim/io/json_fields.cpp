@@ -1,7 +1,9 @@
 #include "sim/io/json_fields.h"
 
 #include <cmath>
+#include <set>
 #include <sstream>
+#include <vector>
 
 #include "sim/scene/input_error.h"
 
@@ -18,10 +20,83 @@ std::string format_number(double value) {
 
 std::string describe(const json& value) {
   if (value.is_object()) return "an object";
+  // Never dump what may be large or deep: a message quotes at most a short flat array.
+  if (value.is_array()) {
+    bool flat = value.size() <= 6;
+    for (const auto& item : value) flat = flat && item.is_primitive() && !item.is_string();
+    if (!flat) return "an array of " + std::to_string(value.size());
+  }
+  if (value.is_string() && value.get_ref<const std::string&>().size() > 60)
+    return json(value.get_ref<const std::string&>().substr(0, 57)).dump() + "...";
   std::string s = value.dump();
-  if (value.is_array() && s.size() > 40) return "an array of " + std::to_string(value.size());
   if (s.size() > 60) s = s.substr(0, 57) + "...";
   return s;
+}
+
+namespace {
+
+// Where the parser is, for the messages of parse_json_strictly: one entry per open object or
+// array.
+struct OpenContainer {
+  bool is_array = false;
+  std::size_t index = 0;           // arrays: the element being read
+  std::string key;                 // objects: the member being read
+  std::set<std::string> keys;      // objects: the members seen
+};
+
+std::string pointer_of_stack(const std::vector<OpenContainer>& stack) {
+  std::string p;
+  for (std::size_t i = 0; i + 1 < stack.size(); ++i)
+    p += "/" + (stack[i].is_array ? std::to_string(stack[i].index) : stack[i].key);
+  return p.empty() ? "/" : p;
+}
+
+}  // namespace
+
+json parse_json_strictly(const std::string& text, const std::string& label) {
+  if (const auto nul = text.find('\0'); nul != std::string::npos)
+    throw InputError(label + ": not valid JSON (a NUL byte at offset " + std::to_string(nul) + ")");
+  std::vector<OpenContainer> stack;
+  auto next_element = [&] {
+    if (!stack.empty() && stack.back().is_array) ++stack.back().index;
+  };
+  const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (depth > kMaxJsonDepth)
+      throw InputError(label + ": " + pointer_of_stack(stack) + ": nested deeper than " + std::to_string(kMaxJsonDepth) +
+                       " levels");
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        stack.push_back({event == json::parse_event_t::array_start, 0, "", {}});
+        break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        stack.pop_back();
+        next_element();
+        break;
+      case json::parse_event_t::key: {
+        OpenContainer& object = stack.back();
+        object.key = parsed.get<std::string>();
+        if (!object.keys.insert(object.key).second) {
+          stack.push_back({});  // so the pointer names the repeated member
+          throw InputError(label + ": " + pointer_of_stack(stack) + ": the key appears twice in one object");
+        }
+        break;
+      }
+      case json::parse_event_t::value:
+        next_element();
+        break;
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, check);
+  } catch (const json::parse_error& e) {
+    // nlohmann reports the byte offset; that is enough to find the mistake.
+    throw InputError(label + ": not valid JSON (" + std::string(e.what()) + ")");
+  } catch (const json::out_of_range& e) {
+    throw InputError(label + ": a number out of the double range (" + std::string(e.what()) + ")");
+  }
 }
 
 FieldReader::FieldReader(const json& object, std::string file, std::string pointer)

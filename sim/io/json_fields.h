@@ -49,8 +49,17 @@ class FieldReader {
   std::set<std::string> known_;
 };
 
-// Short rendering of a JSON value for messages ("0", "\"abc\"", "an object", ...).
+// Short rendering of a JSON value for messages ("0", "\"abc\"", "an object", ...); never dumps
+// a large or deep value.
 std::string describe(const nlohmann::json& value);
+
+// Deepest nesting a scene, a log's metadata or any file vascsim reads may have.
+inline constexpr int kMaxJsonDepth = 64;
+// Parses JSON read from `label` and refuses (InputError naming `label` and the JSON path) what
+// the JSON library would accept silently or fail on badly: a key twice in one object (it keeps
+// the last), a NUL byte (it stops reading there), nesting deeper than kMaxJsonDepth (messages
+// and copies recurse), numbers beyond the double range.
+nlohmann::json parse_json_strictly(const std::string& text, const std::string& label);
 // Formats a bound as the user would write it (0.1, 200, 1e+06).
 std::string format_number(double value);
 

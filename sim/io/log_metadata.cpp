@@ -47,12 +47,7 @@ std::string write_log_metadata(const LogMetadata& m) {
 }
 
 LogMetadata read_log_metadata(const std::string& text, const std::string& label) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw InputError(label + ": frame log metadata is not valid JSON (" + e.what() + ")");
-  }
+  const json j = io::parse_json_strictly(text, label + " (metadata)");
   LogMetadata m;
   io::FieldReader in(j, label + " (metadata)", "");
   m.title = in.text("title", "");

@@ -29,8 +29,10 @@ void read_boundary(FieldReader& in, BoundarySpec& out) {
     out.pinned.clear();
     for (std::size_t i = 0; i < pinned->size(); ++i) {
       const json& v = (*pinned)[i];
-      if (!v.is_number_integer() || std::abs(v.get<long long>()) > 1000000)
-        in.fail("pinned/" + std::to_string(i), "an integer node index", v);
+      // Compared in the value's own type: an unsigned 2^64 - 1 read as signed would be -1, the tip.
+      const bool index = v.is_number_unsigned() ? v.get<unsigned long long>() <= 1000000u
+                         : v.is_number_integer() && v.get<long long>() >= -1000000 && v.get<long long>() <= 1000000;
+      if (!index) in.fail("pinned/" + std::to_string(i), "an integer node index in [-1000000, 1000000]", v);
       out.pinned.push_back(v.get<int>());
     }
   }

@@ -11,13 +11,7 @@ namespace vascsim {
 using nlohmann::json;
 
 Scene read_scene_text(const std::string& text, const std::string& label) {
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // nlohmann reports the byte offset; that is enough to find the mistake.
-    throw InputError(label + ": not valid JSON (" + std::string(e.what()) + ")");
-  }
+  const json root = io::parse_json_strictly(text, label);
   Scene scene;
   scene.file = label;
   io::FieldReader in(root, label, "");
