@@ -114,3 +114,67 @@ TEST(CliRun, KilledRunLeavesAReadableLog) {
 
 }  // namespace
 }  // namespace vascsim::test
+
+namespace vascsim::test {
+namespace {
+
+// run.output_interval has a floor, and a run whose log would exceed --max-log-size (default 10G)
+// is refused before anything is written (1e-9 s once wrote 810 MB in 3 s).
+TEST(CliRun, TinyOutputIntervalsAndHugeLogsAreRefusedUpFront) {
+  const std::string dir = fresh_temp_dir("run_log_size");
+  write_text(dir + "/tiny.json", R"({"maze": null, "run": {"output_interval": 1e-9}})");
+  CommandResult r = run_vascsim("run " + dir + "/tiny.json --out " + dir + "/a");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("/run/output_interval"), std::string::npos) << r.output;
+  write_text(dir + "/long.json", R"({"maze": null, "rod": {"nodes": 40}, "run": {"duration": 1000, "output_interval": 1e-5}})");
+  r = run_vascsim("run " + dir + "/long.json --out " + dir + "/b");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("GB"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--max-log-size"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/b")) << "nothing may be written for a refused run";
+  // The limit is the user's to move, either way.
+  write_text(dir + "/short.json", R"({"maze": null, "rod": {"nodes": 10}, "run": {"duration": 0.1}})");
+  r = run_vascsim("run " + dir + "/short.json --out " + dir + "/c --quiet --max-log-size 1k");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = run_vascsim("run " + dir + "/short.json --out " + dir + "/c --quiet --max-log-size 1M");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  r = run_vascsim("run " + dir + "/short.json --out " + dir + "/d --max-log-size lots");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  fs::remove_all(dir);
+}
+
+// A forced run first removes the previous run's outputs: killed early or run with another scene,
+// it never leaves an old summary or video beside its own log. The user's other files stay.
+TEST(CliRun, ForcedRunRemovesThePreviousRunsOutputsFirst) {
+  const std::string dir = fresh_temp_dir("run_force");
+  write_text(dir + "/ok.json", R"({"maze": null, "rod": {"nodes": 10}, "run": {"duration": 0.05}})");
+  ASSERT_EQ(run_vascsim("run " + dir + "/ok.json --out " + dir + "/out --quiet").exit_code, 0);
+  write_text(dir + "/out/video.mp4", "an old video");
+  fs::create_directories(dir + "/out/plots");
+  write_text(dir + "/out/plots/snapshots.png", "an old plot");
+  write_text(dir + "/out/notes.txt", "mine");
+  // The next run fails at its first step: it writes a new summary (ok false) and keeps nothing old.
+  write_text(dir + "/bad.json", R"({"maze": null, "rod": {"nodes": 10}, "run": {"duration": 1},
+      "loads": {"point": [{"node": -1, "force": [0, 1e6]}]}, "solver": {"max_iterations": 1, "adaptive": false, "rel_tol": 1e-14}})");
+  const CommandResult r = run_vascsim("run " + dir + "/bad.json --out " + dir + "/out --quiet --force");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/out/video.mp4")) << "the previous run's video survived";
+  EXPECT_FALSE(fs::exists(dir + "/out/plots/snapshots.png")) << "the previous run's plot survived";
+  EXPECT_NE(read_text(dir + "/out/summary.json").find("\"ok\": false"), std::string::npos);
+  EXPECT_EQ(read_text(dir + "/out/notes.txt"), "mine");
+  fs::remove_all(dir);
+}
+
+TEST(CliRun, ADirectoryOrADeviceIsNotASceneFile) {
+  const std::string dir = fresh_temp_dir("run_scene_kind");
+  CommandResult r = run_vascsim("run " + dir + " --out " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("is a directory"), std::string::npos) << r.output;
+  r = run_vascsim("run /dev/zero --out " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("not a regular file"), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace vascsim::test

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 
@@ -30,13 +31,14 @@ const std::vector<OptionSpec> kOptions = {
     {"force", "", "reuse DIR even if it holds files (they are replaced)"},
     {"duration", "T", "simulated time in s (overrides the scene's run.duration)"},
     {"quiet", "", "no progress line"},
+    {"max-log-size", "BYTES", "refuse a run whose frame log would exceed this (default 10G; suffixes k, M, G)"},
     {"render", "", "render DIR/video.mp4 when the run ends (see vascsim render --help)"},
     {"help", "", "show this help"},
 };
 
 void print_usage() {
   std::printf(
-      "usage: vascsim run SCENE --out DIR [--force] [--duration T] [--quiet] [--render]\n\n"
+      "usage: vascsim run SCENE --out DIR [--force] [--duration T] [--quiet] [--render] [--max-log-size BYTES]\n\n"
       "Simulates the scene and streams every frame to DIR/frames.vlog (format in docs/frame-log.md);\n"
       "writes DIR/summary.json when the run ends or fails. Exit code 1 if the simulation failed\n"
       "(every frame computed before the failure is kept), 2 for bad input.\n\noptions:\n%s",
@@ -112,6 +114,47 @@ LogMetadata metadata_for(const Scene& scene, const Run& run) {
   return m;
 }
 
+// A forced run first removes what a previous run wrote here, so the directory never mixes two
+// runs (an old summary beside a new partial log, an old video beside a new log). The user's
+// files (bookmarks, exports, anything else) stay.
+void remove_run_outputs(const std::string& dir) {
+  std::error_code ec;
+  for (const char* name : {"summary.json", "frames.vlog", "video.mp4", "video.webm"}) fs::remove(fs::path(dir) / name, ec);
+  for (const char* name : {"tip_trajectory.png", "actuation_force.png", "snapshots.png", "tracking_error.png",
+                           "contact_force.png"})
+    fs::remove(fs::path(dir) / "plots" / name, ec);
+}
+
+// Bytes from "10G", "500M", "2e9" (k, M, G: powers of 1000).
+double max_log_size(const Args& args) {
+  const std::string text = args.value("max-log-size").value_or("10G");
+  char* end = nullptr;
+  double bytes = std::strtod(text.c_str(), &end);
+  const std::string suffix(end);
+  if (suffix == "k" || suffix == "K") bytes *= 1e3;
+  else if (suffix == "M") bytes *= 1e6;
+  else if (suffix == "G") bytes *= 1e9;
+  else if (!suffix.empty()) bytes = NAN;
+  if (!(bytes > 0) || !std::isfinite(bytes) || end == text.c_str())
+    throw UsageError("--max-log-size: expected a size in bytes such as 500M or 20G, got '" + text + "'");
+  return bytes;
+}
+
+// The frame log's size is known before the run: fixed-size records at the output interval.
+void check_log_size(const Scene& scene, const Run& run, double limit) {
+  double doubles = 1;
+  for (const auto& c : run.channels()) doubles += c.count;
+  const double frames = scene.solver.mode == SolveMode::kStatic ? 2 : std::floor(scene.run.duration / scene.run.output_interval) + 1;
+  const double bytes = frames * doubles * 8;
+  if (bytes <= limit) return;
+  char message[320];
+  std::snprintf(message, sizeof message,
+                "the frame log would take %.3g GB (%.0f frames of %.0f bytes: run.duration %g s / run.output_interval %g s), "
+                "more than --max-log-size %.3g GB: raise run.output_interval, shorten the run, or pass a larger --max-log-size",
+                bytes / 1e9, frames, doubles * 8, scene.run.duration, scene.run.output_interval, limit / 1e9);
+  throw InputError((scene.file.empty() ? std::string("scene") : scene.file) + ": " + message);
+}
+
 }  // namespace
 
 int run_run_command(int argc, char** argv) {
@@ -132,6 +175,7 @@ int run_run_command(int argc, char** argv) {
   // Compiled before any output exists: a scene that cannot run leaves nothing behind.
   Run run(compile(input));
   const Scene& scene = run.scene();  // as resolved: the duration a maze scene runs, the rod at the entry
+  check_log_size(scene, run, max_log_size(args));
 
   // Refuse to mix a new run into a directory holding someone's files.
   std::error_code ec;
@@ -139,6 +183,7 @@ int run_run_command(int argc, char** argv) {
     if (!fs::is_directory(*out, ec)) throw InputError(*out + ": exists and is not a directory");
     if (!fs::is_empty(*out, ec) && !args.flag("force"))
       throw InputError(*out + ": directory is not empty (pass --force to replace its run files)");
+    remove_run_outputs(*out);
   } else if (!fs::create_directories(*out, ec)) {
     throw InputError(*out + ": cannot create directory (" + ec.message() + ")");
   }

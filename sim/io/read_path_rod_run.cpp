@@ -47,7 +47,9 @@ json write_rod(const RodSpec& spec) {
 
 void read_run(FieldReader& in, RunSpec& out) {
   out.duration = in.positive("duration", out.duration, 1e7);
-  out.output_interval = in.positive("output_interval", out.output_interval, 1e7);
+  // At least 1e-6 s: a finer interval logs faster than any step a scene can take usefully and
+  // fills a disk within seconds (docs/scenes.md).
+  out.output_interval = in.number("output_interval", out.output_interval, RunSpec::kMinOutputInterval, 1e7);
   in.finish();
 }
 

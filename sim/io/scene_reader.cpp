@@ -1,5 +1,6 @@
 #include "sim/io/scene_reader.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -59,12 +60,21 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
 }
 
 Scene read_scene_file(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status)) throw InputError(path + ": is a directory, not a scene file");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(path + ": not a regular file (a scene is read from a file, not a device or a pipe)");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path + ": cannot open scene file");
-  std::ostringstream text;
-  text << file.rdbuf();
+  // Read at most one byte past the limit: enough to tell a too-large file from a large one.
+  std::string text(kMaxSceneBytes + 1, '\0');
+  file.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (file.bad()) throw InputError(path + ": cannot read scene file");
-  return read_scene_text(text.str(), path);
+  text.resize(static_cast<std::size_t>(file.gcount()));
+  if (text.size() > kMaxSceneBytes)
+    throw InputError(path + ": larger than " + std::to_string(kMaxSceneBytes >> 20) + " MB, the limit for a scene file");
+  return read_scene_text(text, path);
 }
 
 std::string scene_to_json(const Scene& scene) {

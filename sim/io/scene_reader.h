@@ -2,13 +2,18 @@
 // Every error is an InputError naming the file, the JSON pointer and what was expected.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "sim/scene/scene.h"
 
 namespace vascsim {
 
-// Reads `path`. Throws InputError if the file is missing, not JSON, or any value is invalid.
+// The largest scene file read (a scene is a few kilobytes; explicit walls of a big network a few
+// megabytes).
+inline constexpr std::size_t kMaxSceneBytes = std::size_t(16) << 20;
+// Reads `path`. Throws InputError if the file is missing, not a regular file, larger than
+// kMaxSceneBytes, not JSON, or any value is invalid.
 Scene read_scene_file(const std::string& path);
 // Parses scene JSON text; `label` names the source in messages.
 Scene read_scene_text(const std::string& text, const std::string& label);

@@ -206,7 +206,8 @@ struct RunSpec {
   static constexpr double kSettleTime = 2.0;  // s
   // s, the duration a run uses when its reference takes path_duration (s).
   double duration_for(double path_duration) const { return duration_from_path ? path_duration + kSettleTime : duration; }
-  double output_interval = 0.01;  // s, time between logged frames
+  double output_interval = 0.01;  // s, time between logged frames, >= kMinOutputInterval
+  static constexpr double kMinOutputInterval = 1e-6;  // s
 };
 
 struct Scene {
