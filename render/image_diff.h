@@ -14,7 +14,8 @@ struct Image {
   std::vector<std::uint8_t> rgb;  // top-down rows, 3 bytes per pixel
 };
 
-// Throws InputError naming the file if it is missing or not a readable image.
+// Throws InputError naming the file if it is missing, not a regular file, over 256 MB, not a
+// well-formed PNG (signature, every chunk's CRC, a final empty IEND) or not decodable.
 Image load_png(const std::string& path);
 
 struct DiffStats {

@@ -168,5 +168,38 @@ TEST(DiffCli, OutNeverReplacesWithoutForceNorAnInputNorADevice) {
   EXPECT_TRUE(fs::is_directory(dir / "folder"));
 }
 
+// Damaged PNGs are refused naming the file, where stb_image alone decoded them: a flipped byte
+// (bad CRC), a file cut short (no IEND), a text file; and a size mismatch names both files.
+TEST(DiffCli, DamagedPngsAndSizeMismatchesNameTheFile) {
+  ScratchDir dir("cli_diff_damaged");
+  Image a;
+  a.width = 8;
+  a.height = 4;
+  a.rgb.assign(8 * 4 * 3, 120);
+  write_image_png(dir / "a.png", a);
+  const std::string good = testing::read_bytes(dir / "a.png");
+  std::string flipped = good;
+  flipped[flipped.size() - 20] ^= 0x01;  // inside the last IDAT chunk's data or CRC
+  std::ofstream(dir / "flipped.png", std::ios::binary) << flipped;
+  std::ofstream(dir / "short.png", std::ios::binary) << good.substr(0, good.size() - 12);
+  std::ofstream(dir / "text.png") << "not an image";
+  const std::pair<std::string, std::string> cases[] = {
+      {"flipped.png", "CRC"}, {"short.png", "IEND"}, {"text.png", "signature"}};
+  for (const auto& [name, why] : cases) {
+    const auto r = run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / name) + "'", dir);
+    EXPECT_EQ(r.exit_code, 2) << name << ": " << r.out;
+    EXPECT_NE(r.err.find(dir / name), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+  }
+  Image wide = a;
+  wide.width = 4;
+  wide.rgb.resize(4 * 4 * 3);
+  write_image_png(dir / "wide.png", wide);
+  const auto r = run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "wide.png") + "'", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(dir / "a.png"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(dir / "wide.png"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace vascsim::render

@@ -9,6 +9,7 @@
 #include "apps/vascsim/commands.h"
 #include "render/image_diff.h"
 #include "sim/io/output_file.h"
+#include "sim/scene/input_error.h"
 
 namespace vascsim::cli {
 
@@ -42,6 +43,10 @@ int run_diff_command(int argc, char** argv) {
   if (out) check_replaceable_output(*out, args.flag("force"), args.positional());
   const render::Image a = render::load_png(args.positional()[0]);
   const render::Image b = render::load_png(args.positional()[1]);
+  if (a.width != b.width || a.height != b.height)
+    throw InputError(args.positional()[0] + " is " + std::to_string(a.width) + "x" + std::to_string(a.height) + ", " +
+                     args.positional()[1] + " is " + std::to_string(b.width) + "x" + std::to_string(b.height) +
+                     ": images of different sizes cannot be compared");
   render::Image heat;
   const render::DiffStats s = render::diff_images(a, b, tolerance, out ? &heat : nullptr);
   if (out) render::write_image_png(*out, heat);
