@@ -12,6 +12,7 @@
 #include "sim/run/compile.h"
 #include "sim/run/navigation.h"
 #include "sim/run/run.h"
+#include "sim/scene/input_error.h"
 
 namespace vascsim {
 namespace {
@@ -73,6 +74,32 @@ TEST(Compile, FourThreadsShareOneModelAndWriteTheSequentialBytes) {
     EXPECT_EQ(sinks[static_cast<std::size_t>(k)].bytes.size(), alone.bytes.size()) << "thread " << k;
     EXPECT_TRUE(sinks[static_cast<std::size_t>(k)].bytes == alone.bytes) << "thread " << k << " wrote other frames";
   }
+}
+
+}  // namespace
+}  // namespace vascsim
+
+namespace vascsim {
+namespace {
+
+// A legal maze the rod cannot start in is refused at compile with what does not fit; it once
+// ran and stopped at t = 0 with "the rod blew up" (issue 14 item 8).
+TEST(Compile, RefusesARodThatDoesNotFitItsMaze) {
+  const std::pair<const char*, const char*> cases[] = {
+      // 2 m cells with 0.1 m lumens: 1.9 m thick walls, the rod would start inside the outer one.
+      {R"({"maze": {"rows": 5, "cols": 5, "width": 10, "height": 10, "lumen_width": 0.1}})", "/maze: the rod starts"},
+      // A 3 mm lumen for a 4 mm rod.
+      {R"({"maze": {"lumen_width": 0.003}})", "/maze/lumen_width: the lumen (3 mm) must be wider than the rod (4 mm"},
+  };
+  for (const auto& [text, expected] : cases) {
+    try {
+      compile(read_scene_text(text, "misfit.json"));
+      ADD_FAILURE() << "compiled " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("misfit.json: ") + expected), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(compile(read_scene_text(R"({"maze": {"lumen_width": 0.01}})", "fits.json")));
 }
 
 }  // namespace

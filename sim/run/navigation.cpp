@@ -1,6 +1,7 @@
 #include "sim/run/navigation.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "sim/contact/paper_contact.h"
 #include "sim/contact/wall_contact.h"
@@ -10,6 +11,34 @@
 
 namespace vascsim {
 
+namespace {
+
+std::string label_of(const Scene& scene) { return scene.file.empty() ? std::string("built-in scene") : scene.file; }
+
+// A rod that cannot fit the lumen, or that the entry leaves inside a wall, would blow up at the
+// first step ("the residual is not finite"): say what does not fit instead.
+void refuse_what_does_not_fit(const Scene& scene, const Navigation& nav, const Model& model) {
+  char text[400];
+  const double diameter = 2.0 * model.rod.outer_radius;
+  if (nav.environment.lumen_width > 0.0 && nav.environment.lumen_width <= diameter) {
+    std::snprintf(text, sizeof text, ": /maze/lumen_width: the lumen (%g mm) must be wider than the rod (%g mm across, /rod/outer_radius)",
+                  1e3 * nav.environment.lumen_width, 1e3 * diameter);
+    throw InputError(label_of(scene) + text);
+  }
+  const double gap = nav.contact_geometry->min_gap(model.rod.x_initial, nav.environment.lumen_width);
+  if (gap <= 0.0) {
+    std::snprintf(text, sizeof text,
+                  ": /maze: the rod starts %g mm inside a wall: it lies straight behind the start for its length "
+                  "(%g m) and the entry is cut only through walls within that length and thinner than the gaps "
+                  "between channels; use cells whose walls are near the start (a smaller maze or larger lumens) "
+                  "or a longer rod",
+                  -1e3 * gap, scene.rod.length);
+    throw InputError(label_of(scene) + text);
+  }
+}
+
+}  // namespace
+
 std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
   auto nav = std::make_unique<Navigation>();
   try {
@@ -17,7 +46,7 @@ std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
     nav->route = solve_route(nav->maze, scene.maze, scene.path);
   } catch (const InputError& e) {
     // The environment code knows the JSON path, not the file.
-    throw InputError((scene.file.empty() ? std::string("built-in scene") : scene.file) + ": " + e.what());
+    throw InputError(label_of(scene) + ": " + e.what());
   }
   nav->corners = nav->route.corners;
   nav->entry = open_entry(nav->maze, nav->corners, scene.rod.length, nav->environment);
@@ -55,6 +84,7 @@ void add_navigation_modules(const Scene& scene, Navigation& nav, Model& model) {
     model.forces.push_back(std::make_unique<PointLoadModule>(n, std::vector<PointLoadSpec>{load}));
   }
   nav.contact_geometry = make_contact_geometry(nav.environment.walls, model.rod, nav.contact);
+  refuse_what_does_not_fit(scene, nav, model);
   if (scene.contact.mode == ContactMode::kImplicit) {
     model.forces.push_back(std::make_unique<WallContactModule>(nav.contact_geometry, nav.contact));
     if (nav.contact.friction > 0.0)
