@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstring>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 
@@ -71,6 +73,44 @@ TEST(FrameLog, RejectsMissingAndForeignFiles) {
   }
   { std::ofstream f(path, std::ios::binary); f.write("VSIMLOG\0\1\0\0\0", 12); }
   EXPECT_THROW(FrameLogReader{path}, InputError);  // truncated header
+  std::remove(path.c_str());
+}
+
+// Metadata is bounded (kMaxMetadataBytes, 32 MB): the writer refuses to make a log its readers
+// would refuse, and a reader refuses a header that claims more, before allocating it (a 10^6-point
+// path once made `vascsim render` use over 3 GB; a corrupt length, 1 GB at once).
+TEST(FrameLog, MetadataIsBoundedOnWriteAndOnRead) {
+  FrameLogHeader h;
+  h.node_count = 2;
+  h.channels = {{"position", "m", ChannelLayout::kNodeVectors, 4}};
+  h.metadata = std::string(kMaxMetadataBytes + 1, ' ');
+  const std::string path = temp_path("big_meta.vlog");
+  try {
+    FrameLogWriter w(path, h);
+    ADD_FAILURE() << "wrote metadata over the limit";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("32 MB"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(path)) << "a refused log must not appear";
+  // A header whose metadata length says 1 GB: patch a small valid log's length field.
+  h.metadata = "{}";
+  { FrameLogWriter w(path, h); }
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::size_t length_at = 20 + 4 + 8 + 4 + 1 + 1 + 4;  // after the channel "position", unit "m", layout, count
+  ASSERT_EQ(bytes.compare(length_at + 4, 2, "{}"), 0) << "the test's idea of the header layout is wrong";
+  const std::uint32_t claimed = 1u << 30;
+  std::memcpy(&bytes[length_at], &claimed, 4);
+  { std::ofstream out(path, std::ios::binary); out << bytes; }
+  try {
+    FrameLogReader r(path);
+    ADD_FAILURE() << "accepted a 1 GB metadata length";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("exceeds the 32 MB limit"), std::string::npos) << e.what();
+  }
   std::remove(path.c_str());
 }
 

@@ -78,6 +78,10 @@ FrameLogWriter::FrameLogWriter(const std::string& path, const FrameLogHeader& he
     if (c.layout == ChannelLayout::kVector && c.count != 2)
       throw std::invalid_argument("frame log channel " + c.name + ": a vector has 2 values");
   }
+  // Checked before the file exists: a log its readers refuse must not be written at all.
+  if (header_.metadata.size() > kMaxMetadataBytes)
+    throw InputError(path + ": frame log metadata of " + std::to_string(header_.metadata.size()) + " bytes exceeds the " +
+                     std::to_string(kMaxMetadataBytes >> 20) + " MB limit (a path or wall list too finely sampled?)");
   file_ = std::fopen(path.c_str(), "wb");
   if (!file_) throw InputError(path + ": cannot create frame log (" + std::strerror(errno) + ")");
 
@@ -149,7 +153,12 @@ FrameLogReader::FrameLogReader(const std::string& path) : path_(path) {
     c.count = in.u32();
     header_.channels.push_back(c);
   }
-  header_.metadata = in.string(1u << 30);
+  const std::uint32_t metadata_bytes = in.u32();
+  if (metadata_bytes > kMaxMetadataBytes)
+    throw InputError(path + ": frame log metadata of " + std::to_string(metadata_bytes) + " bytes exceeds the " +
+                     std::to_string(kMaxMetadataBytes >> 20) + " MB limit");
+  header_.metadata.assign(metadata_bytes, '\0');
+  if (metadata_bytes) in.bytes(header_.metadata.data(), metadata_bytes);
   data_offset_ = (in.consumed() + 7) / 8 * 8;
 }
 

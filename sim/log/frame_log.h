@@ -43,6 +43,9 @@ struct FrameLogHeader {
 };
 
 inline constexpr std::uint32_t kFrameLogVersion = 1;
+// The largest metadata a log may carry: geometry and scene for any network this tool draws,
+// while a reader's JSON of it stays far below a gigabyte.
+inline constexpr std::uint32_t kMaxMetadataBytes = 32u << 20;
 
 // Streams frames to a file. Writes to `path`; the caller chooses whether that is a temporary name.
 class FrameLogWriter {
