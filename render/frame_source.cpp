@@ -85,10 +85,15 @@ bool FrameSource::refresh() {
 
 void FrameSource::check_times(std::size_t end) const {
   for (; times_checked_ < std::min(end, frame_count_); ++times_checked_) {
-    const double t = checked_time(times_checked_);
-    if (times_checked_ > 0 && t < last_checked_time_) throw bad_time(times_checked_, t, "before the previous frame's time");
+    const double t = reader_.time_of(times_checked_);
+    check_frame_time(times_checked_, t, last_checked_time_);
     last_checked_time_ = t;
   }
+}
+
+void FrameSource::check_frame_time(std::size_t i, double t, double previous) const {
+  if (!std::isfinite(t) || t < 0) throw bad_time(i, t, "not a finite time >= 0");
+  if (i > 0 && t < previous) throw bad_time(i, t, "before the previous frame's time");
 }
 
 InputError FrameSource::bad_time(std::size_t i, double t, const char* why) const {

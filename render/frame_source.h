@@ -60,6 +60,9 @@ class FrameSource {
   // Checks that frames [0, end) have finite, non-negative, non-decreasing times (each frame is
   // read once over the source's life); throws InputError naming the first bad frame.
   void check_times(std::size_t end) const;
+  // The one rule for a frame's time: finite, >= 0 and not before the previous frame's
+  // (`previous`, s; ignored for frame 0). Throws InputError naming the log and frame i.
+  void check_frame_time(std::size_t i, double t, double previous) const;
   // Frames [0, end) were checked elsewhere (a reader that streams every time, like the replay
   // server's index), the last of them at time `last` (s).
   void times_checked_elsewhere(std::size_t end, double last) const {

@@ -99,12 +99,18 @@ TEST(RenderCli, BadOptionsExit2) {
   EXPECT_FALSE(fs::exists(run + "/video.mp4"));
 }
 
+// A width x height image of one grey level.
+Image flat_image(int width, int height, std::uint8_t level) {
+  Image image;
+  image.width = width;
+  image.height = height;
+  image.rgb.assign(static_cast<std::size_t>(width) * height * 3, level);
+  return image;
+}
+
 TEST(DiffCli, ExitCodesAndHeatMap) {
   ScratchDir dir("cli_diff");
-  Image a;
-  a.width = 8;
-  a.height = 4;
-  a.rgb.assign(8 * 4 * 3, 200);
+  Image a = flat_image(8, 4, 200);
   Image b = a;
   b.rgb[3 * 9] = 150;  // one pixel off by 50
   write_image_png(dir / "a.png", a);
@@ -131,10 +137,7 @@ TEST(DiffCli, ExitCodesAndHeatMap) {
 // never an input or anything but a regular file, even with --force.
 TEST(DiffCli, OutNeverReplacesWithoutForceNorAnInputNorADevice) {
   ScratchDir dir("cli_diff_out");
-  Image a;
-  a.width = 8;
-  a.height = 4;
-  a.rgb.assign(8 * 4 * 3, 200);
+  Image a = flat_image(8, 4, 200);
   Image b = a;
   b.rgb[0] = 10;
   write_image_png(dir / "a.png", a);
@@ -172,10 +175,7 @@ TEST(DiffCli, OutNeverReplacesWithoutForceNorAnInputNorADevice) {
 // (bad CRC), a file cut short (no IEND), a text file; and a size mismatch names both files.
 TEST(DiffCli, DamagedPngsAndSizeMismatchesNameTheFile) {
   ScratchDir dir("cli_diff_damaged");
-  Image a;
-  a.width = 8;
-  a.height = 4;
-  a.rgb.assign(8 * 4 * 3, 120);
+  const Image a = flat_image(8, 4, 120);
   write_image_png(dir / "a.png", a);
   const std::string good = testing::read_bytes(dir / "a.png");
   std::string flipped = good;

@@ -157,9 +157,7 @@ void ReplayRun::extend_track() {
   times_.reserve(source_->frame_count());
   tips_.reserve(source_->frame_count());
   scan(times_.size(), [&](std::size_t i, const double* r) {
-    if (!std::isfinite(r[0]) || r[0] < 0 || (!times_.empty() && r[0] < times_.back()))
-      throw InputError(source_->log_path() + ": frame " + std::to_string(i) + " has time " + std::to_string(r[0]) +
-                       " s (times must be finite, >= 0 and non-decreasing)");
+    source_->check_frame_time(i, r[0], times_.empty() ? 0.0 : times_.back());
     times_.push_back(r[0]);
     tips_.emplace_back(r[tip], r[tip + 1]);
   });
