@@ -26,7 +26,7 @@ struct FloorRig {
   const WallContactModule* contact = nullptr;
 
   FloorRig(Vec2 gravity, double mu, double damping = 0.0) {
-    scene.has_maze = false;
+    scene.has_environment = false;
     scene.rod.nodes = 11;
     scene.rod.length = 0.1;
     scene.shape.start = Vec2(0.0, 0.0);

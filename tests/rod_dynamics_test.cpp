@@ -25,7 +25,7 @@ struct Oscillator {
   Scene scene;
   double amplitude;  // m, initial displacement of node 2
   Oscillator(Scheme scheme) {
-    scene.has_maze = false;
+    scene.has_environment = false;
     scene.rod.nodes = 3;
     scene.rod.length = 1.0;
     scene.rod.density = 1000.0;
@@ -134,7 +134,7 @@ TEST(RodDynamics, CantileverNaturalFrequencies) {
 struct FallingRod {
   Scene scene;
   FallingRod() {
-    scene.has_maze = false;
+    scene.has_environment = false;
     scene.rod.nodes = 5;
     scene.rod.inner_radius = 0.0;
     scene.loads.gravity.enabled = true;
@@ -203,7 +203,7 @@ TEST(RodDynamics, CrossFlowDragTerminalVelocityPerDirection) {
 // within a step), checked by central differences on a bent rod moving every which way.
 TEST(RodDynamics, CrossFlowDragStiffnessIsTheVelocityJacobian) {
   Scene scene;
-  scene.has_maze = false;
+  scene.has_environment = false;
   scene.rod.nodes = 5;
   scene.loads.drag.enabled = true;
   const Model model = *compile(scene);
@@ -239,7 +239,7 @@ TEST(RodDynamics, CrossFlowDragStiffnessIsTheVelocityJacobian) {
 // had the sign backwards.
 TEST(RodDynamics, ExternalForceSign) {
   Scene scene;
-  scene.has_maze = false;
+  scene.has_environment = false;
   scene.rod.nodes = 6;
   scene.solver.scheme = Scheme::kBackwardEuler;
   scene.solver.rel_tol = 1e-12;
@@ -262,7 +262,7 @@ TEST(RodDynamics, ExternalForceSign) {
 // A node with prescribed motion follows it exactly; the rest of the rod is dragged along.
 TEST(RodDynamics, PrescribedNodeFollowsItsMotion) {
   Scene scene;
-  scene.has_maze = false;
+  scene.has_environment = false;
   scene.rod.nodes = 8;
   PrescribedMotionSpec drive;
   drive.node = -1;
@@ -288,7 +288,7 @@ TEST(RodDynamics, PrescribedNodeFollowsItsMotion) {
 // the same step succeeds with a smaller dt.
 TEST(RodDynamics, FailedStepKeepsStateAndAdaptiveRetrySucceeds) {
   Scene scene;
-  scene.has_maze = false;
+  scene.has_environment = false;
   scene.rod.nodes = 20;
   scene.boundary.clamp = ClampKind::kFirstEdge;
   scene.solver.max_iterations = 3;

@@ -78,7 +78,7 @@ TEST(RodExtremes, LargeStaticLoad) {
 
 TEST(RodExtremes, CoiledAndFoldedStarts) {
   Scene coiled;
-  coiled.has_maze = false;
+  coiled.has_environment = false;
   coiled.rod.nodes = 60;
   coiled.shape.initial_curvature = 1.0 / 0.02;  // about four turns of 2 cm radius, unwinding
   run_case(coiled, 1e-3, 5, "coiled");

@@ -9,7 +9,7 @@ namespace vascsim::test {
 // A horizontal cantilever along +x from the origin, centred clamp (docs/references.md section 0), static mode.
 inline Scene cantilever(int nodes) {
   Scene s;
-  s.has_maze = false;
+  s.has_environment = false;
   s.rod.nodes = nodes;
   s.boundary.clamp = ClampKind::kCentred;
   s.solver.mode = SolveMode::kStatic;

@@ -61,7 +61,7 @@ TEST(SolverSections, ErrorsNameTheJsonPath) {
 
 TEST(SolverSections, CantileverSceneLoads) {
   const Scene s = read_scene_file(VASCSIM_SOURCE_DIR "/scenes/cantilever.json");
-  EXPECT_FALSE(s.has_maze);
+  EXPECT_FALSE(s.has_environment);
   EXPECT_EQ(s.boundary.clamp, ClampKind::kCentred);
   const Model m = *compile(s);
   EXPECT_EQ(m.constraints.size(), 2u);

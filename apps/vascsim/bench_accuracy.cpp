@@ -47,7 +47,7 @@ double beta_l(int n) {
 
 Scene cantilever(int nodes, Scheme scheme, double dt, double rel_tol, double p) {
   Scene s;
-  s.has_maze = false;
+  s.has_environment = false;
   s.rod.nodes = nodes;
   s.boundary.clamp = ClampKind::kCentred;
   s.solver.scheme = scheme;

@@ -22,7 +22,7 @@ using Clock = std::chrono::steady_clock;
 
 Scene paper_rod(int nodes, Scheme scheme) {
   Scene scene;
-  scene.has_maze = false;
+  scene.has_environment = false;
   scene.rod.nodes = nodes;
   scene.solver.scheme = scheme;
   scene.solver.dt = 1e-3;

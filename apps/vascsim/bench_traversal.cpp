@@ -36,7 +36,7 @@ int run_bench_traversal(int argc, char** argv) {
   const std::string file = args.value("scene").value_or("scenes/maze_default.json");
   const int repeat = static_cast<int>(args.integer("repeat", 3, 1, 100));
   const Scene base = read_scene_file(file);
-  if (!base.has_maze) throw UsageError("scene " + file + " has no maze to traverse");
+  if (!base.has_environment) throw UsageError("scene " + file + " has no maze to traverse");
   std::printf("traversal of %s (one core, frames not written)\n", file.c_str());
   std::printf("%-9s %10s %8s %9s %11s %10s %8s %12s\n", "preset", "simulated", "steps", "newton", "wall [s]",
               "real-time", "goal", "tip rms [mm]");

@@ -46,7 +46,7 @@ int run_maze_command(int argc, char** argv) {
   if (!out) throw UsageError("--out FILE is required");
 
   Scene scene = args.value("scene") ? read_scene_file(*args.value("scene")) : Scene{};
-  if (!scene.has_maze) throw UsageError("scene " + scene.file + " has no maze (\"maze\": null)");
+  if (!scene.has_environment) throw UsageError("scene " + scene.file + " has no maze (\"maze\": null)");
   MazeSpec& maze = scene.maze;
   const bool generator_option = args.value("seed") || args.value("rows") || args.value("cols") || args.value("lumen-width");
   if (maze.explicit_walls && generator_option)

@@ -97,6 +97,7 @@ LogMetadata metadata_for(const Scene& scene, const Run& run) {
     m.bounds = nav->environment.bounds;
     m.walls = nav->environment.walls;
     m.lumen_width = nav->environment.lumen_width;
+    m.lumen = nav->environment.lumen;
     m.path = nav->trajectory->sample(1e-4);
     m.start = nav->environment.start;
     m.goal = nav->environment.goal;

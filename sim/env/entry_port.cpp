@@ -11,8 +11,8 @@ double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(
 
 }  // namespace
 
-EntryPort open_entry(const Environment& env, const Polyline& centreline, double reach, Environment& opened) {
-  EntryPort port;
+Inlet open_entry(const Environment& env, const Polyline& centreline, double reach, Environment& opened) {
+  Inlet port;
   port.tip = centreline.front();
   if (centreline.size() >= 2 && (centreline[1] - centreline[0]).norm() > 0)
     port.inward = (centreline[1] - centreline[0]).normalized();

@@ -8,15 +8,9 @@
 
 namespace vascsim {
 
-struct EntryPort {
-  Vec2 tip = Vec2::Zero();          // m, where the rod's tip starts (the path's start)
-  Vec2 inward = Vec2::UnitX();      // unit, direction of the first path leg (into the maze)
-  double opening = 0.0;             // m, width of the hole cut in the wall(s)
-};
-
 // Cuts an opening of the lumen width through every wall crossed by the ray from the start point
 // backwards along the first leg of `centreline`, up to `reach` metres (the rod's length).
 // Returns where the rod enters. Pure: `env` is copied, the result holds the opened walls.
-EntryPort open_entry(const Environment& env, const Polyline& centreline, double reach, Environment& opened);
+Inlet open_entry(const Environment& env, const Polyline& centreline, double reach, Environment& opened);
 
 }  // namespace vascsim

@@ -1,7 +1,9 @@
-// The world the robot moves in, resolved from a MazeSpec into plain geometry: wall segments with a
-// thickness (capsules, geometry.h), the start and goal points, the nominal channel width, and for a
-// generated maze the cell grid it came from. Contact queries on these walls are in wall_distance.h,
-// the reference path through them in centreline.h. Conventions: docs/environment.md.
+// The world the robot moves in, as plain geometry every consumer shares whatever made it (a
+// generated maze, explicit walls, a vessel graph, an image mask): wall segments with a thickness
+// (capsules, geometry.h) for contact, friction and gap statistics; the lumen outline for drawing
+// and inside tests; the start, the goal and the lumen radius there for the goal test; the inlet
+// where the rod enters; the reference centreline with the local lumen radius along it. Contact
+// queries on the walls are in wall_distance.h. Conventions: docs/environment.md.
 #pragma once
 
 #include <optional>
@@ -13,13 +15,28 @@
 
 namespace vascsim {
 
+// Where the rod enters the network: it starts straight behind `tip`, heading along `inward`.
+struct Inlet {
+  Vec2 tip = Vec2::Zero();      // m, where the rod's tip starts (the path's start)
+  Vec2 inward = Vec2::UnitX();  // unit, direction of the first path leg (into the network)
+  double opening = 0.0;         // m, width of the way in (a maze's port, a vessel's diameter)
+};
+
 struct Environment {
   Box2 bounds;                     // m, the maze rectangle 0..width x 0..height (the centre lines of the
                                    // outer walls; thick outer walls reach thickness/2 beyond it)
   std::vector<WallSegment> walls;  // m, includes the outer boundary
   Vec2 start = Vec2::Zero();       // m
   Vec2 goal = Vec2::Zero();        // m
-  double lumen_width = 0.0;        // m, nominal channel width
+  double lumen_width = 0.0;        // m, nominal channel width (a maze's; a vessel network's narrowest
+                                   // diameter along the route)
+  // Closed rings (the last point joins the first) whose even-odd interior is the lumen. A maze
+  // gives its bounds rectangle: its walls, drawn over it, cut out the channels.
+  std::vector<Polyline> lumen;
+  Inlet inlet;
+  Polyline centreline;                 // m, the sharp reference centreline, start to goal
+  std::vector<double> centreline_radius;  // m, lumen radius at each centreline point
+  double goal_radius = 0.0;            // m, lumen radius at the goal (the goal test's scale)
   std::optional<GridMaze> grid;    // generated mazes only
 };
 

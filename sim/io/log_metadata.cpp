@@ -35,6 +35,13 @@ std::string write_log_metadata(const LogMetadata& m) {
   for (const auto& w : m.walls) walls.push_back({w.a.x(), w.a.y(), w.b.x(), w.b.y(), w.thickness});
   j["walls"] = walls;
   j["lumen_width"] = m.lumen_width;
+  json lumen = json::array();
+  for (const auto& ring : m.lumen) {
+    json points = json::array();
+    for (const auto& p : ring) points.push_back(point(p));
+    lumen.push_back(points);
+  }
+  j["lumen"] = lumen;
   json path = json::array();
   for (const auto& p : m.path) path.push_back(point(p));
   j["path"] = path;
@@ -68,6 +75,13 @@ LogMetadata read_log_metadata(const std::string& text, const std::string& label)
     }
   }
   m.lumen_width = in.number("lumen_width", 0.0, 0.0, 1e6);
+  if (const json* lumen = in.raw("lumen")) {
+    if (!lumen->is_array()) in.fail("lumen", "an array of rings", *lumen);
+    for (const auto& ring : *lumen) {
+      m.lumen.push_back(read_polyline(ring, in, "lumen"));
+      if (m.lumen.back().size() < 3) in.fail("lumen", "rings of at least 3 points", ring);
+    }
+  }
   if (const json* path = in.raw("path")) m.path = read_polyline(*path, in, "path");
   m.start = in.vec2("start", m.start);
   m.goal = in.vec2("goal", m.goal);

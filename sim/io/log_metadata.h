@@ -17,6 +17,9 @@ struct LogMetadata {
   Box2 bounds;                      // m, the environment's extent
   std::vector<WallSegment> walls;   // m
   double lumen_width = 0.0;         // m, nominal channel width (0 if not applicable)
+  // m, closed rings whose even-odd interior is the lumen (Environment::lumen); empty in older
+  // logs, where the bounds rectangle is drawn as the lumen.
+  std::vector<Polyline> lumen;
   Polyline path;                    // m, reference tip path, densely sampled where it curves
   Vec2 start = Vec2::Zero();        // m
   Vec2 goal = Vec2::Zero();         // m

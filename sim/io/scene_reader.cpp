@@ -27,13 +27,13 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
     reader(fields, spec);
   };
   if (const json* maze = in.raw("maze"); maze && maze->is_null())
-    scene.has_maze = false;
+    scene.has_environment = false;
   else
     section("maze", io::read_maze, scene.maze);
   section("path", io::read_path, scene.path);
   section("rod", io::read_rod, scene.rod);
   section("run", io::read_run, scene.run);
-  scene.run.duration_from_path = scene.has_maze && !(root.contains("run") && root["run"].contains("duration"));
+  scene.run.duration_from_path = scene.has_environment && !(root.contains("run") && root["run"].contains("duration"));
   section("control", io::read_control, scene.control);
   section("contact", io::read_contact, scene.contact);
   section("shape", io::read_shape, scene.shape);
@@ -41,11 +41,11 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
   section("loads", io::read_loads, scene.loads);
   section("solver", io::read_solver, scene.solver);
   // A maze run places the rod at the maze's entry port; a shape there would be silently ignored.
-  if (scene.has_maze && in.has("shape"))
+  if (scene.has_environment && in.has("shape"))
     in.fail("shape", "no \"shape\" in a maze scene (the rod starts at the entry port, docs/navigation.md)",
             root["shape"]);
   // The controller follows a trajectory in time; an equilibrium has no time to follow it in.
-  if (scene.has_maze && scene.solver.mode == SolveMode::kStatic)
+  if (scene.has_environment && scene.solver.mode == SolveMode::kStatic)
     in.object("solver").fail("mode", "\"dynamic\" in a maze scene (static equilibrium has no trajectory to follow)",
                              root["solver"]["mode"]);
   // Static mode solves under the loads' values at t = 0 (it ramps them itself): a ramp or sine
@@ -81,7 +81,7 @@ std::string scene_to_json(const Scene& scene) {
   json root;
   root["format"] = "vascsim-scene/1";
   root["name"] = scene.name;
-  root["maze"] = scene.has_maze ? io::write_maze(scene.maze) : json(nullptr);
+  root["maze"] = scene.has_environment ? io::write_maze(scene.maze) : json(nullptr);
   root["path"] = io::write_path(scene.path);
   root["rod"] = io::write_rod(scene.rod);
   root["run"] = io::write_run(scene.run);

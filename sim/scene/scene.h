@@ -29,6 +29,58 @@ struct MazeSpec {
   double grid_pitch = 0.2;      // m, cell size of the explicit-walls path grid
 };
 
+// A vessel network (issue 12), the alternative to a maze: a centreline graph of named nodes and
+// segments, each a tube whose radius tapers linearly between the points where it is given, with
+// stenoses and aneurysm sacs on segments; or a binary image of the lumen (`mask`). The lumen is the
+// union of the tubes and sacs (sim/env/vessel_lumen.h). Conventions: docs/environment.md.
+struct VesselNodeSpec {
+  std::string name;
+  Vec2 position = Vec2::Zero();  // m
+};
+// A local narrowing centred `at` metres along the segment from its `from` node: the radius falls
+// smoothly (a raised cosine over `length`) to `fraction` of the tube's radius there.
+struct StenosisSpec {
+  double at = 0.0;        // m, arc length from the segment's first node
+  double length = 0.1;    // m, the whole narrowed stretch
+  double fraction = 0.5;  // -, radius left at the centre (0.5: a 50 % narrowing)
+};
+// A saccular aneurysm: a disc of `radius` beside the segment, `at` metres along it, on the `left`
+// (or right, looking from the first node) side, overlapping the tube so that its mouth (the neck)
+// is `neck` metres wide where it crosses the tube's wall.
+struct AneurysmSpec {
+  double at = 0.0;      // m, arc length from the segment's first node
+  bool left = true;     // side, looking along the segment
+  double radius = 0.1;  // m
+  double neck = 0.05;   // m, width of the opening, <= 2 radius
+};
+struct VesselSegmentSpec {
+  std::string from, to;           // node names
+  std::vector<Vec2> via;          // m, interior centreline points, in order
+  // m: two values (at from and to, tapering linearly with arc length) or one per point
+  // (from, every via point, to).
+  std::vector<double> radius;
+  std::vector<StenosisSpec> stenoses;
+  std::vector<AneurysmSpec> aneurysms;
+};
+// A lumen traced from an image: white lumen on black, greyscale thresholded (sim/env/vessel_mask.h).
+struct VesselMaskSpec {
+  std::string file;          // PNG path as written in the scene (resolved against the scene's folder)
+  std::string resolved;      // the path opened (set by the scene reader)
+  double pixel_size = 1e-3;  // m, edge of one pixel
+  double threshold = 0.5;    // -, grey level (0 black .. 1 white) at the lumen's boundary
+  Vec2 start = Vec2::Zero(); // m, from the image's bottom-left corner
+  Vec2 goal = Vec2::Zero();  // m
+};
+struct VesselsSpec {
+  bool from_mask = false;  // true: `mask`; false: the graph below
+  std::vector<VesselNodeSpec> nodes;
+  std::vector<VesselSegmentSpec> segments;
+  std::string start, goal;          // node names; start must end one segment only (the inlet)
+  std::vector<std::string> route;   // node names start..goal; empty: the shortest route
+  VesselMaskSpec mask;
+};
+enum class EnvironmentKind { kMaze, kVessels };
+
 enum class PathSolver { kWallFollower, kBreadthFirst };
 
 // The ideal trajectory: lumen centreline from start to goal, traversed at constant speed.
@@ -213,8 +265,10 @@ struct RunSpec {
 struct Scene {
   std::string file;  // where it was read from, for messages; empty for built-in scenes
   std::string name = "scene";
-  bool has_maze = true;  // false for scenes in free space ("maze": null), e.g. validation problems
+  bool has_environment = true;  // false for scenes in free space ("maze": null), e.g. validation problems
+  EnvironmentKind environment = EnvironmentKind::kMaze;  // which of the two below
   MazeSpec maze;
+  VesselsSpec vessels;
   PathSpec path;
   RodSpec rod;
   RunSpec run;

@@ -14,7 +14,7 @@ namespace {
 
 Scene free_rod(int nodes) {
   Scene scene;
-  scene.has_maze = false;
+  scene.has_environment = false;
   scene.rod.nodes = nodes;
   scene.shape.initial_curvature = 2.0;  // a bent rod, so that every element does real work
   scene.solver.scheme = Scheme::kBackwardEuler;
