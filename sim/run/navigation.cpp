@@ -6,6 +6,8 @@
 #include "sim/contact/paper_contact.h"
 #include "sim/contact/wall_contact.h"
 #include "sim/env/centreline.h"
+#include "sim/env/entry_port.h"
+#include "sim/env/vessel_environment.h"
 #include "sim/rod/loads.h"
 #include "sim/scene/input_error.h"
 
@@ -37,26 +39,38 @@ void refuse_what_does_not_fit(const Scene& scene, const Navigation& nav, const M
   }
 }
 
+// The maze's own environment, then its route, then the port cut into it along the route's first leg.
+void prepare_maze(const Scene& scene, Navigation& nav) {
+  nav.maze = build_environment(scene.maze);
+  nav.route = solve_route(nav.maze, scene.maze, scene.path);
+  Environment& env = nav.environment;
+  env.inlet = open_entry(nav.maze, nav.route.corners, scene.rod.length, env);
+  env.lumen = {{env.bounds.min, Vec2(env.bounds.max.x(), env.bounds.min.y()), env.bounds.max,
+                Vec2(env.bounds.min.x(), env.bounds.max.y())}};
+  env.centreline = nav.route.corners;
+  env.centreline_radius.assign(env.centreline.size(), 0.5 * env.lumen_width);
+  env.goal_radius = 0.5 * env.lumen_width;
+}
+
 }  // namespace
 
 std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
   auto nav = std::make_unique<Navigation>();
   try {
-    nav->maze = build_environment(scene.maze);
-    nav->route = solve_route(nav->maze, scene.maze, scene.path);
+    if (scene.environment == EnvironmentKind::kMaze) prepare_maze(scene, *nav);
+    else nav->environment = build_vessel_environment(scene.vessels, scene.rod.length);
   } catch (const InputError& e) {
     // The environment code knows the JSON path, not the file.
     throw InputError(label_of(scene) + ": " + e.what());
   }
-  nav->corners = nav->route.corners;
-  nav->entry = open_entry(nav->maze, nav->corners, scene.rod.length, nav->environment);
-  nav->trajectory.emplace(nav->corners, scene.path.corner_radius, scene.path.speed, scene.path.ramp_time);
+  const Environment& env = nav->environment;
+  nav->trajectory.emplace(env.centreline, scene.path.corner_radius, scene.path.speed, scene.path.ramp_time);
   scene.run.duration = scene.run.duration_for(nav->trajectory->duration());
   scene.run.duration_from_path = false;
-  // The rod lies straight behind the start, root first: node 0 outside the maze, the tip (last
+  // The rod lies straight behind the start, root first: node 0 outside the network, the tip (last
   // node) on the path's start, heading into the first leg.
-  scene.shape.start = nav->entry.tip - scene.rod.length * nav->entry.inward;
-  scene.shape.direction = std::atan2(nav->entry.inward.y(), nav->entry.inward.x());
+  scene.shape.start = env.inlet.tip - scene.rod.length * env.inlet.inward;
+  scene.shape.direction = std::atan2(env.inlet.inward.y(), env.inlet.inward.x());
   scene.shape.initial_curvature = 0.0;
   return nav;
 }

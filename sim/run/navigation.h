@@ -14,7 +14,6 @@
 #include "sim/control/actuation.h"
 #include "sim/control/tip_controller.h"
 #include "sim/env/centreline.h"
-#include "sim/env/entry_port.h"
 #include "sim/env/environment.h"
 #include "sim/env/trajectory.h"
 #include "sim/env/wall_distance.h"
@@ -23,11 +22,12 @@
 namespace vascsim {
 
 struct Navigation {
-  Environment maze;         // the environment as generated (or given), before the port was cut
-  MazeRoute route;          // its solved route and sharp centreline, start to goal
-  Environment environment;  // walls with the entry port cut open
-  EntryPort entry;
-  Polyline corners;         // route.corners
+  // What the rod moves in, whatever made it: a maze with its entry port cut open, a vessel
+  // network or a traced mask, with the inlet, the centreline and the lumen outline.
+  Environment environment;
+  // Maze scenes only: the maze as generated (or given) before the port was cut, and its route.
+  Environment maze;
+  MazeRoute route;
   std::optional<Trajectory> trajectory;
   ContactParams contact;
   // The walls' contact geometry, one per run: contact, friction and the gap statistics share it.

@@ -70,6 +70,9 @@ struct VesselMaskSpec {
   double threshold = 0.5;    // -, grey level (0 black .. 1 white) at the lumen's boundary
   Vec2 start = Vec2::Zero(); // m, from the image's bottom-left corner
   Vec2 goal = Vec2::Zero();  // m
+  // The image as read (by the scene reader): grey levels 0..255, row-major, row 0 at the top.
+  int width = 0, height = 0;  // px
+  std::vector<std::uint8_t> grey;
 };
 struct VesselsSpec {
   bool from_mask = false;  // true: `mask`; false: the graph below
