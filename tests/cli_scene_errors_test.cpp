@@ -39,7 +39,7 @@ const BadScene kBadScenes[] = {
     {"format", R"({"format": "vascsim-scene/9"})", "/format: expected \"vascsim-scene/1\", got \"vascsim-scene/9\""},
     {"not_object", R"([1, 2])", "/: expected an object, got [1,2]"},
     {"shape_in_maze", R"({"shape": {"direction": 1.0}})",
-     "/shape: expected no \"shape\" in a maze scene (the rod starts at the entry port, docs/navigation.md), got an object"},
+     "/shape: expected no \"shape\" in a maze or vessel scene (the rod starts at the inlet, docs/navigation.md), got an object"},
     {"static_in_maze", R"({"solver": {"mode": "static"}})",
      "/solver/mode: expected \"dynamic\" in a maze scene (static equilibrium has no trajectory to follow), got \"static\""},
     {"static_ramp", R"({"maze": null, "solver": {"mode": "static"}, "loads": {"point": [{"force": [0, 1], "profile": "ramp"}]}})",

@@ -47,6 +47,8 @@ int run_maze_command(int argc, char** argv) {
 
   Scene scene = args.value("scene") ? read_scene_file(*args.value("scene")) : Scene{};
   if (!scene.has_environment) throw UsageError("scene " + scene.file + " has no maze (\"maze\": null)");
+  if (scene.environment == EnvironmentKind::kVessels)
+    throw UsageError("scene " + scene.file + " has vessels, not a maze (use vascsim vessels)");
   MazeSpec& maze = scene.maze;
   const bool generator_option = args.value("seed") || args.value("rows") || args.value("cols") || args.value("lumen-width");
   if (maze.explicit_walls && generator_option)

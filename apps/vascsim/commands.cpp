@@ -5,6 +5,7 @@ namespace vascsim::cli {
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"maze", "generate and solve a maze; write walls and path as JSON", run_maze_command},
+      {"vessels", "build and route a vessel network; write lumen, walls and path as JSON", run_vessels_command},
       {"run", "simulate a scene; stream the frame log and write summary.json", run_run_command},
       {"bench", "measure speed and accuracy (vascsim bench --help)", run_bench_command},
 #ifdef VASCSIM_HAVE_RENDER

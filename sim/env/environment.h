@@ -36,6 +36,9 @@ struct Environment {
   Inlet inlet;
   Polyline centreline;                 // m, the sharp reference centreline, start to goal
   std::vector<double> centreline_radius;  // m, lumen radius at each centreline point
+  // m, per centreline point: the largest corner rounding the lumen allows there; empty: the
+  // scene's path.corner_radius everywhere (mazes).
+  std::vector<double> corner_radius;
   double goal_radius = 0.0;            // m, lumen radius at the goal (the goal test's scale)
   std::optional<GridMaze> grid;    // generated mazes only
 };

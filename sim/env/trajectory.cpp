@@ -13,21 +13,25 @@ constexpr double kPi = 3.14159265358979323846;
 double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
 
 // Drops consecutive duplicates and straight-through points, which would otherwise take a share of
-// their legs from the real corners. Tolerances are relative to the polyline's size.
-Polyline clean(const Polyline& in) {
+// their legs from the real corners. Tolerances are relative to the polyline's size. `radii` (one
+// per point) follows the points kept.
+Polyline clean(const Polyline& in, std::vector<double>& radii) {
   double scale = 0.0;
   for (std::size_t i = 1; i < in.size(); ++i) scale += (in[i] - in[i - 1]).norm();
   const double same = 1e-12 * scale;
   Polyline out;
-  for (const Vec2& p : in)
-    if (out.empty() || (p - out.back()).norm() > same) out.push_back(p);
+  std::vector<double> out_radii;
+  for (std::size_t i = 0; i < in.size(); ++i)
+    if (out.empty() || (in[i] - out.back()).norm() > same) out.push_back(in[i]), out_radii.push_back(radii[i]);
   Polyline kept;
+  radii.clear();
   for (std::size_t i = 0; i < out.size(); ++i) {
     if (i > 0 && i + 1 < out.size()) {
       const Vec2 u = (out[i] - kept.back()).normalized(), w = (out[i + 1] - out[i]).normalized();
       if (std::abs(cross(u, w)) <= 1e-12 && u.dot(w) > 0.0) continue;
     }
     kept.push_back(out[i]);
+    radii.push_back(out_radii[i]);
   }
   return kept;
 }
@@ -35,16 +39,22 @@ Polyline clean(const Polyline& in) {
 }  // namespace
 
 Trajectory::Trajectory(const Polyline& corners, double corner_radius, double speed, double ramp_time)
+    : Trajectory(corners, std::vector<double>(corners.size(), corner_radius), speed, ramp_time) {}
+
+Trajectory::Trajectory(const Polyline& corners, const std::vector<double>& corner_radii, double speed, double ramp_time)
     : speed_(speed), peak_speed_(speed) {
   if (corners.empty()) throw std::invalid_argument("Trajectory: the polyline has no points");
-  if (!(corner_radius >= 0.0) || !std::isfinite(corner_radius))
-    throw std::invalid_argument("Trajectory: corner_radius must be finite and >= 0");
+  if (corner_radii.size() != corners.size())
+    throw std::invalid_argument("Trajectory: one corner radius per polyline point expected");
+  for (double r : corner_radii)
+    if (!(r >= 0.0) || !std::isfinite(r)) throw std::invalid_argument("Trajectory: corner_radius must be finite and >= 0");
   if (!(speed > 0.0) || !std::isfinite(speed)) throw std::invalid_argument("Trajectory: speed must be finite and > 0");
   if (!(ramp_time >= 0.0) || !std::isfinite(ramp_time))
     throw std::invalid_argument("Trajectory: ramp_time must be finite and >= 0");
   for (const Vec2& p : corners)
     if (!p.allFinite()) throw std::invalid_argument("Trajectory: a polyline point is not finite");
-  const Polyline p = clean(corners);
+  std::vector<double> radii = corner_radii;
+  const Polyline p = clean(corners, radii);
   origin_ = p.front();
   const std::size_t n = p.size();
   if (n < 2) return;
@@ -71,6 +81,7 @@ Trajectory::Trajectory(const Polyline& corners, double corner_radius, double spe
     const double theta = std::atan2(cross(u, w), u.dot(w));  // signed turn, rad
     const double half_tan = std::tan(0.5 * std::abs(theta));
     // A reversal has no finite tangent length: leave it sharp.
+    const double corner_radius = radii[i];
     if (corner_radius == 0.0 || std::abs(theta) > kPi - 1e-9) {
       add_line(p[i]);
       continue;

@@ -41,6 +41,9 @@ class Trajectory {
   // dropped); corner_radius >= 0, m; speed > 0, m/s; ramp_time >= 0, s. Throws
   // std::invalid_argument otherwise.
   Trajectory(const Polyline& corners, double corner_radius, double speed, double ramp_time = 0.0);
+  // Each corner its own largest radius: corner_radii[i] (m, >= 0) for corners[i] (the ends' values
+  // are unused). A vessel network's lumen allows more rounding in a wide bend than in a narrow one.
+  Trajectory(const Polyline& corners, const std::vector<double>& corner_radii, double speed, double ramp_time = 0.0);
 
   double length() const { return length_; }      // m
   double duration() const { return duration_; }  // s, length / speed, plus ramp_time with ramps

@@ -26,10 +26,15 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
     io::FieldReader fields = in.object(key);
     reader(fields, spec);
   };
-  if (const json* maze = in.raw("maze"); maze && maze->is_null())
+  if (in.has("vessels")) {
+    if (in.has("maze")) in.fail("maze", "no \"maze\" beside \"vessels\" (a scene has one environment)", root["maze"]);
+    scene.environment = EnvironmentKind::kVessels;
+    section("vessels", io::read_vessels, scene.vessels);
+  } else if (const json* maze = in.raw("maze"); maze && maze->is_null()) {
     scene.has_environment = false;
-  else
+  } else {
     section("maze", io::read_maze, scene.maze);
+  }
   section("path", io::read_path, scene.path);
   section("rod", io::read_rod, scene.rod);
   section("run", io::read_run, scene.run);
@@ -42,7 +47,7 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
   section("solver", io::read_solver, scene.solver);
   // A maze run places the rod at the maze's entry port; a shape there would be silently ignored.
   if (scene.has_environment && in.has("shape"))
-    in.fail("shape", "no \"shape\" in a maze scene (the rod starts at the entry port, docs/navigation.md)",
+    in.fail("shape", "no \"shape\" in a maze or vessel scene (the rod starts at the inlet, docs/navigation.md)",
             root["shape"]);
   // The controller follows a trajectory in time; an equilibrium has no time to follow it in.
   if (scene.has_environment && scene.solver.mode == SolveMode::kStatic)
@@ -81,7 +86,10 @@ std::string scene_to_json(const Scene& scene) {
   json root;
   root["format"] = "vascsim-scene/1";
   root["name"] = scene.name;
-  root["maze"] = scene.has_environment ? io::write_maze(scene.maze) : json(nullptr);
+  if (scene.has_environment && scene.environment == EnvironmentKind::kVessels)
+    root["vessels"] = io::write_vessels(scene.vessels);
+  else
+    root["maze"] = scene.has_environment ? io::write_maze(scene.maze) : json(nullptr);
   root["path"] = io::write_path(scene.path);
   root["rod"] = io::write_rod(scene.rod);
   root["run"] = io::write_run(scene.run);

@@ -11,6 +11,10 @@
 namespace vascsim::io {
 
 void read_maze(FieldReader& in, MazeSpec& out);
+void read_vessels(FieldReader& in, VesselsSpec& out);
+// The mask's pixels, from spec.resolved (an InputError naming `pointer` and the file if unreadable,
+// not a PNG or over 8192 px a side); fills width and height.
+std::vector<std::uint8_t> load_mask_pixels(VesselMaskSpec& spec, const std::string& pointer);
 void read_path(FieldReader& in, PathSpec& out);
 void read_rod(FieldReader& in, RodSpec& out);
 void read_run(FieldReader& in, RunSpec& out);
@@ -22,6 +26,7 @@ void read_loads(FieldReader& in, LoadSpec& out);
 void read_solver(FieldReader& in, SolverSpec& out);
 
 nlohmann::json write_maze(const MazeSpec& spec);
+nlohmann::json write_vessels(const VesselsSpec& spec);
 nlohmann::json write_path(const PathSpec& spec);
 nlohmann::json write_rod(const RodSpec& spec);
 nlohmann::json write_run(const RunSpec& spec);

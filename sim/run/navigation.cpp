@@ -22,12 +22,24 @@ std::string label_of(const Scene& scene) { return scene.file.empty() ? std::stri
 void refuse_what_does_not_fit(const Scene& scene, const Navigation& nav, const Model& model) {
   char text[400];
   const double diameter = 2.0 * model.rod.outer_radius;
-  if (nav.environment.lumen_width > 0.0 && nav.environment.lumen_width <= diameter) {
-    std::snprintf(text, sizeof text, ": /maze/lumen_width: the lumen (%g mm) must be wider than the rod (%g mm across, /rod/outer_radius)",
-                  1e3 * nav.environment.lumen_width, 1e3 * diameter);
-    throw InputError(label_of(scene) + text);
+  const Environment& env = nav.environment;
+  if (scene.environment == EnvironmentKind::kMaze) {
+    if (env.lumen_width > 0.0 && env.lumen_width <= diameter) {
+      std::snprintf(text, sizeof text, ": /maze/lumen_width: the lumen (%g mm) must be wider than the rod (%g mm across, /rod/outer_radius)",
+                    1e3 * env.lumen_width, 1e3 * diameter);
+      throw InputError(label_of(scene) + text);
+    }
+  } else {
+    // The narrowest place on the route, e.g. a stenosis, must let the rod through.
+    const auto narrowest = std::min_element(env.centreline_radius.begin(), env.centreline_radius.end());
+    if (narrowest != env.centreline_radius.end() && 2.0 * *narrowest <= diameter) {
+      const Vec2& at = env.centreline[static_cast<std::size_t>(narrowest - env.centreline_radius.begin())];
+      std::snprintf(text, sizeof text, ": /vessels: the lumen on the route narrows to %g mm across at (%g, %g) m, "
+                    "not wider than the rod (%g mm across, /rod/outer_radius)", 2e3 * *narrowest, at.x(), at.y(), 1e3 * diameter);
+      throw InputError(label_of(scene) + text);
+    }
   }
-  const double gap = nav.contact_geometry->min_gap(model.rod.x_initial, nav.environment.lumen_width);
+  const double gap = nav.contact_geometry->min_gap(model.rod.x_initial, std::max(env.lumen_width, diameter));
   if (gap <= 0.0) {
     std::snprintf(text, sizeof text,
                   ": /maze: the rod starts %g mm inside a wall: it lies straight behind the start for its length "
@@ -64,7 +76,10 @@ std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
     throw InputError(label_of(scene) + ": " + e.what());
   }
   const Environment& env = nav->environment;
-  nav->trajectory.emplace(env.centreline, scene.path.corner_radius, scene.path.speed, scene.path.ramp_time);
+  if (env.corner_radius.empty())
+    nav->trajectory.emplace(env.centreline, scene.path.corner_radius, scene.path.speed, scene.path.ramp_time);
+  else
+    nav->trajectory.emplace(env.centreline, env.corner_radius, scene.path.speed, scene.path.ramp_time);
   scene.run.duration = scene.run.duration_for(nav->trajectory->duration());
   scene.run.duration_from_path = false;
   // The rod lies straight behind the start, root first: node 0 outside the network, the tip (last

@@ -135,7 +135,7 @@ void Run::update_statistics(double dt, const Controls& controls) {
   stats_.actuation_force_max = std::max(stats_.actuation_force_max, actuation.norm());
   actuation_time_ += actuation.norm() * dt;
   stats_.actuation_force_mean = actuation_time_ / std::max(state_.t, 1e-300);
-  if (!stats_.goal_reached && (tip - navigation_->environment.goal).norm() <= 0.25 * navigation_->environment.lumen_width) {
+  if (!stats_.goal_reached && (tip - navigation_->environment.goal).norm() <= 0.5 * navigation_->environment.goal_radius) {
     stats_.goal_reached = true;
     stats_.goal_time = state_.t;
   }
