@@ -1,0 +1,91 @@
+// Every documented vessel-scene error (docs/environment.md, "Errors") through the executable: the
+// message names the file and the JSON path, the exit code is 2, and nothing is written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "tests/cli_test_support.h"
+
+namespace vascsim::test {
+namespace {
+
+struct BadVessels {
+  const char* name;
+  const char* text;
+  const char* message;  // expected after "FILE: "
+};
+
+#define NODES R"("nodes": {"a": [0, 0], "j": [0.5, 0], "b": [1, 0.3], "c": [1, -0.3]})"
+#define TUBE(extra) R"({"from": "a", "to": "j", "radius": 0.05)" extra "}"
+
+const BadVessels kBad[] = {
+    {"unknown_node", R"({"vessels": {)" NODES R"(, "segments": [{"from": "a", "to": "x", "radius": 0.05}], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/to: \"x\" is not a node in /vessels/nodes"},
+    {"radius_count", R"({"vessels": {)" NODES R"(, "segments": [{"from": "a", "to": "j", "via": [[0.2, 0.1]], "radius": [0.05, 0.04, 0.03, 0.02]}], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/radius: expected 2 radii (at the ends) or 3 (one per point), got 4"},
+    {"radius_negative", R"({"vessels": {)" NODES R"(, "segments": [{"from": "a", "to": "j", "radius": -1}], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/radius: expected a number in (0, 1000], got -1"},
+    {"no_nodes", R"({"vessels": {"segments": [], "start": "a", "goal": "j"}})",
+     "/vessels/nodes: expected an object of named points, e.g. {\"inlet\": [1.0, 0.5]}, got null"},
+    {"inlet_not_an_end", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(, {"from": "j", "to": "b", "radius": 0.04}, {"from": "j", "to": "c", "radius": 0.04}], "start": "j", "goal": "b"}})",
+     "/vessels/start: the inlet node \"j\" must end exactly one segment (the rod enters there), it ends 3"},
+    {"not_connected", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(, {"from": "b", "to": "c", "radius": 0.04}], "start": "a", "goal": "c"}})",
+     "/vessels/goal: \"c\" is not connected to the start \"a\""},
+    {"route_gap", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(, {"from": "j", "to": "b", "radius": 0.04}], "start": "a", "goal": "b", "route": ["a", "b"]}})",
+     "/vessels/route/1: no segment joins \"a\" and \"b\""},
+    {"stenosis_outside", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.45, "length": 0.2}])") R"(], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/stenoses/0: the narrowing (at 0.45 m, length 0.2 m) must lie within the segment (0 to 0.5 m)"},
+    {"neck_too_wide", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "aneurysms": [{"at": 0.2, "radius": 0.05, "neck": 0.12}])") R"(], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/aneurysms/0/neck: a width > 0 and below the sac's diameter"},
+    {"too_narrow_for_rod", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.25, "length": 0.2, "fraction": 0.03}])") R"(], "start": "a", "goal": "j"}})",
+     "/vessels: the lumen on the route narrows to 3 mm across at (0.25, 0) m, not wider than the rod (4 mm across, /rod/outer_radius)"},
+    {"maze_and_vessels", R"({"maze": {}, "vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j"}})",
+     "/maze: expected no \"maze\" beside \"vessels\" (a scene has one environment), got an object"},
+    {"unknown_key", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "radius_end": 0.04)") R"(], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/radius_end: unknown key"},
+};
+
+class VesselSceneErrors : public ::testing::TestWithParam<BadVessels> {};
+
+TEST_P(VesselSceneErrors, NameFileAndPointerAndExitTwo) {
+  const BadVessels& bad = GetParam();
+  const std::string dir = fresh_temp_dir(std::string("vessels_") + bad.name);
+  const std::string scene = dir + "/bad.json", out = dir + "/network.json";
+  write_text(scene, bad.text);
+  for (const std::string& command : {"vessels --scene " + scene + " --out " + out, "run " + scene + " --out " + dir + "/run"}) {
+    const CommandResult r = run_vascsim(command);
+    EXPECT_EQ(r.exit_code, 2) << command << "\n" << r.output;
+    EXPECT_NE(r.output.find(scene + ": " + bad.message), std::string::npos)
+        << "expected: " << scene << ": " << bad.message << "\ngot: " << r.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/run"));
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Documented, VesselSceneErrors, ::testing::ValuesIn(kBad),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(VesselsCommand, WritesTheNetworkAndRefusesAMaze) {
+  const std::string dir = fresh_temp_dir("vessels_command");
+  CommandResult r = run_vascsim("vessels --scene " + source_path("scenes/bifurcation.json") + " --out " + dir + "/n.json");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const std::string doc = read_text(dir + "/n.json");
+  for (const char* key : {"\"format\": \"vascsim-vessels/1\"", "\"lumen\"", "\"walls\"", "\"graph\"", "\"route\"", "\"samples\""})
+    EXPECT_NE(doc.find(key), std::string::npos) << key;
+  // Deterministic, and an existing file is kept without --force.
+  r = run_vascsim("vessels --scene " + source_path("scenes/bifurcation.json") + " --out " + dir + "/n.json");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = run_vascsim("vessels --scene " + source_path("scenes/bifurcation.json") + " --out " + dir + "/n2.json");
+  EXPECT_EQ(read_text(dir + "/n2.json"), doc);
+  r = run_vascsim("vessels --scene " + source_path("scenes/maze_default.json") + " --out " + dir + "/m.json");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("has no \"vessels\" section"), std::string::npos) << r.output;
+  r = run_vascsim("maze --scene " + source_path("scenes/bifurcation.json") + " --out " + dir + "/m.json");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("use vascsim vessels"), std::string::npos) << r.output;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace vascsim::test
