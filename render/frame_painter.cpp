@@ -284,7 +284,8 @@ void FramePainter::paint_lumen(Canvas& c, const glm::dmat3& m) {
     c.fill_rect(glm::min(b0, b1), glm::max(b0, b1), colour);
   };
   const bool has_bounds = (meta_.bounds.max - meta_.bounds.min).minCoeff() > 0;
-  const bool lumen_is_bounds = lumen_is_box_ && lumen_box_.min == meta_.bounds.min && lumen_box_.max == meta_.bounds.max;
+  const bool lumen_is_bounds =
+      lumen_is_box_ && lumen_box_.min == meta_.bounds.min && lumen_box_.max == meta_.bounds.max;
   if (meta_.lumen.empty() || lumen_is_bounds) {
     if (has_bounds) fill_box(meta_.bounds, kLumen);
     return;

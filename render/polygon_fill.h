@@ -24,8 +24,9 @@ struct Triangle {
 
 // The even-odd interior of `rings` (each closed: the last point joins the first; a repeated first
 // point at the end is allowed) as non-degenerate, non-overlapping triangles. Horizontal and
-// zero-length edges are fine; rings with fewer than 3 points contribute nothing. O(n log n) for n
-// vertices plus the number of triangles (at most about 4 per vertex).
+// zero-length edges are fine; rings with fewer than 3 points or a non-finite point contribute
+// nothing. About 2 triangles per vertex; 5000 vertices take about 2 ms (each slab costs the edges
+// crossing it, so many long edges spanning many vertex heights cost more).
 std::vector<Triangle> triangulate_even_odd(const std::vector<Polyline>& rings);
 
 // If `ring` is an axis-aligned rectangle with non-zero area (4 corners in either order, from any

@@ -215,7 +215,8 @@ TEST(RenderLumen, MazeRectangleDrawsThePictureOfALogWithout) {
 TEST(RenderLumen, RegionDrawsEachPixelOnce) {
   // A translucent annulus over white: overlapping triangles would show darker lines.
   const int size = 200;
-  std::vector<Triangle> ts = triangulate_even_odd({circle(Vec2(100, 100), 90, 150, 0.1), circle(Vec2(95, 100), 40, 90, 0.2)});
+  const std::vector<Triangle> ts =
+      triangulate_even_odd({circle(Vec2(100, 100), 90, 150, 0.1), circle(Vec2(95, 100), 40, 90, 0.2)});
   std::vector<glm::vec2> tri;
   for (const auto& t : ts)
     for (const Vec2* v : {&t.a, &t.b, &t.c}) tri.push_back({static_cast<float>(v->x()), static_cast<float>(v->y())});
