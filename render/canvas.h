@@ -1,8 +1,9 @@
 // A 2D drawing surface on the GPU (OSMesa/llvmpipe): capsules, rings, triangles, rounded boxes,
-// polylines, arrows and text, in pixel coordinates with y down. Every shape is one instanced
-// quad whose fragment shader evaluates the shape's signed distance, so edges are anti-aliased
-// analytically at the cost of one distance per covered pixel (no multisample buffer). Shapes
-// are queued and drawn in call order by finish(), which returns the picture.
+// polylines, arrows, filled regions of any shape and text, in pixel coordinates with y down.
+// Every shape is one instanced quad whose fragment shader evaluates the shape's signed distance,
+// so edges are anti-aliased analytically at the cost of one distance per covered pixel (no
+// multisample buffer); a region is rasterised as plain triangles with an anti-aliased outline.
+// Shapes are queued and drawn in call order by finish(), which returns the picture.
 #pragma once
 
 #include <cstdint>
@@ -66,6 +67,13 @@ class Canvas {
   // Arrow from `tail` to `head` (px): a shaft of width `width` and a head sized with it. The
   // head's tip is exactly at `head`.
   void arrow(glm::vec2 tail, glm::vec2 head, float width, Rgba colour);
+  // A region of any shape (a vessel lumen): `triangles` tile it, three vertices each (px), as
+  // triangulate_even_odd (render/polygon_fill.h) gives them transformed to pixels; `outline`
+  // holds its boundary as closed rings (px). Each pixel whose centre is inside is drawn exactly
+  // once, so even a translucent colour comes out flat; the outline adds the anti-aliasing ramp
+  // outside the edge (where a translucent colour darkens slightly, as in polyline).
+  void region(const std::vector<glm::vec2>& triangles, const std::vector<std::vector<glm::vec2>>& outline,
+              Rgba colour);
 
   // Text with its baseline at `pos.y`, aligned horizontally on `pos.x`. `angle` in radians,
   // counter-clockwise on screen (pi/2 for a vertical axis label reading bottom to top).
@@ -84,24 +92,29 @@ class Canvas {
     glm::vec4 colour;  // straight alpha
     float kind;        // 0 capsule, 1 triangle, 2 box
   };
-  struct TextVertex {
-    glm::vec2 pos, uv;
+  struct Vertex {  // of glyph quads and regions, drawn as plain triangles
+    glm::vec2 pos, uv;  // uv: glyph atlas coordinates (unused by regions)
     glm::vec4 colour;
   };
+  enum class BatchKind {
+    kShapes,  // instanced quads: shapes_[first, first + count)
+    kText,    // glyph triangles of one font size: vertices_[first, first + count)
+    kRegion,  // plain triangles in one colour: vertices_[first, first + count)
+    kClear,   // a fill_rect: rect and colour below
+  };
   struct Batch {
-    static Batch of(bool text, int font_size, std::size_t first) {
+    static Batch of(BatchKind kind, std::size_t first, int font_size = 0) {
       Batch b;
-      b.text = text;
+      b.kind = kind;
       b.font_size = font_size;
       b.first = first;
       return b;
     }
-    bool text = false;
+    BatchKind kind = BatchKind::kShapes;
     int font_size = 0;
     std::size_t first = 0, count = 0;
-    bool fill = false;  // a fill_rect: rect and colour below, no shapes
-    int rect[4] = {0, 0, 0, 0};  // x, y, width, height in px
-    Rgba colour;
+    int rect[4] = {0, 0, 0, 0};  // kClear: x, y, width, height in px
+    Rgba colour;                 // kClear
   };
   void push_shape(const Shape& s);
   FontAtlas& font(int pixel_height);
@@ -112,12 +125,12 @@ class Canvas {
   AntiAliasing aa_;
   std::unique_ptr<GlContext> gl_;
   std::vector<Shape> shapes_;
-  std::vector<TextVertex> text_vertices_;
+  std::vector<Vertex> vertices_;
   std::vector<Batch> batches_;
   std::map<int, std::unique_ptr<FontAtlas>> fonts_;
   std::map<int, unsigned> font_textures_;
-  unsigned shape_program_ = 0, text_program_ = 0;
-  unsigned shape_vao_ = 0, shape_vbo_ = 0, text_vao_ = 0, text_vbo_ = 0;
+  unsigned shape_program_ = 0, text_program_ = 0, region_program_ = 0;
+  unsigned shape_vao_ = 0, shape_vbo_ = 0, vertex_vao_ = 0, vertex_vbo_ = 0;
   std::vector<glm::vec2> scratch_;
 };
 

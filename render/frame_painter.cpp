@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "render/palette.h"
+#include "render/polygon_fill.h"
 
 namespace vascsim::render {
 
@@ -20,6 +21,7 @@ using palette::kInk;
 // dark blue; forces in saturated colours that differ also in lightness (readable in grey).
 constexpr Rgba kPage = hex(0xEEF1F4);
 constexpr Rgba kLumen = hex(0xFCEFEA);
+constexpr Rgba kTissue = hex(0xEBDCD6);  // around a vessel network's lumen, within the bounds
 constexpr Rgba kWall = hex(0x3C4650);
 constexpr Rgba kPath = hex(0x4C6EF5, 0.85f);
 constexpr Rgba kTrail = hex(0xF59F00);
@@ -37,8 +39,9 @@ glm::vec2 apply(const glm::dmat3& m, Vec2 p) {
   return {static_cast<float>(q.x), static_cast<float>(q.y)};
 }
 
-// Everything the fit camera must show: the environment's bounds and every wall including its
-// thickness (a thick outer wall reaches beyond the bounds); without bounds, also the path and rod.
+// Everything the fit camera must show: the environment's bounds, the lumen and every wall
+// including its thickness (a thick outer wall reaches beyond the bounds); without bounds, also
+// the path and rod.
 Box2 world_box(const LogMetadata& meta, const FrameState& first) {
   Box2 b{Vec2::Constant(1e300), Vec2::Constant(-1e300)};
   auto grow = [&](Vec2 p, double radius) {
@@ -46,6 +49,8 @@ Box2 world_box(const LogMetadata& meta, const FrameState& first) {
     b.max = b.max.cwiseMax(p + Vec2::Constant(radius));
   };
   for (const auto& w : meta.walls) grow(w.a, 0.5 * w.thickness), grow(w.b, 0.5 * w.thickness);
+  for (const auto& ring : meta.lumen)
+    for (const auto& p : ring) grow(p, 0.0);
   const bool has_bounds = (meta.bounds.max - meta.bounds.min).minCoeff() > 0;
   if (has_bounds) {
     grow(meta.bounds.min, 0.0), grow(meta.bounds.max, 0.0);
@@ -156,6 +161,11 @@ ForceScales choose_force_scales(const FrameSource& source, const View& view) {
 FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const ForceScales& scales,
                            const FrameState& first_frame)
     : meta_(metadata), view_(view), scales_(scales), world_(world_box(metadata, first_frame)) {
+  // The lumen is triangulated once, in metres; each frame only moves the vertices. A single
+  // axis-aligned rectangle (a maze logs its bounds so) is filled with a clear as before: cheaper,
+  // and maze pictures stay exactly what they were.
+  lumen_is_box_ = meta_.lumen.size() == 1 && axis_aligned_rectangle(meta_.lumen[0], lumen_box_);
+  if (!lumen_is_box_) lumen_triangles_ = triangulate_even_odd(meta_.lumen);
   const double w = view.width, h = view.height;
   side_panel_ = view.side_panel();
   const bool hud = view.layers.has(Layer::kHud), legend = view.layers.has(Layer::kLegend);
@@ -207,10 +217,7 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
   const LayerSet& on = view_.layers;
   const float h = static_cast<float>(view_.height);
   const float s = static_cast<float>(scale_);
-  // Lumen: the environment's extent, so the walls read as the boundary of a channel.
-  const glm::vec2 b0 = apply(m, meta_.bounds.min), b1 = apply(m, meta_.bounds.max);
-  if (on.has(Layer::kLumen) && (meta_.bounds.max - meta_.bounds.min).minCoeff() > 0)
-    c.fill_rect(glm::min(b0, b1), glm::max(b0, b1), kLumen);
+  if (on.has(Layer::kLumen)) paint_lumen(c, m);
   const float min_wall = std::max(2.0f, h / 300.0f);
   if (on.has(Layer::kWalls))
     for (const auto& w : meta_.walls)
@@ -266,6 +273,37 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
     if (len > scales_.actuation_max_px) d *= static_cast<float>(scales_.actuation_max_px) / len;
     if (len >= 1.0f) c.arrow(scratch_.back(), scratch_.back() + d, actuation_arrow_width(h), kActuation);
   }
+}
+
+// The lumen in the tissue tone, so the walls read as the boundary of a channel: the logged rings'
+// even-odd interior over the rest of the bounds in a darker tissue tone; in older logs, without
+// rings, the environment's extent.
+void FramePainter::paint_lumen(Canvas& c, const glm::dmat3& m) {
+  auto fill_box = [&](const Box2& b, Rgba colour) {
+    const glm::vec2 b0 = apply(m, b.min), b1 = apply(m, b.max);
+    c.fill_rect(glm::min(b0, b1), glm::max(b0, b1), colour);
+  };
+  const bool has_bounds = (meta_.bounds.max - meta_.bounds.min).minCoeff() > 0;
+  const bool lumen_is_bounds =
+      lumen_is_box_ && lumen_box_.min == meta_.bounds.min && lumen_box_.max == meta_.bounds.max;
+  if (meta_.lumen.empty() || lumen_is_bounds) {
+    if (has_bounds) fill_box(meta_.bounds, kLumen);
+    return;
+  }
+  if (has_bounds) fill_box(meta_.bounds, kTissue);
+  if (lumen_is_box_) {
+    fill_box(lumen_box_, kLumen);
+    return;
+  }
+  lumen_px_.clear();
+  for (const Triangle& t : lumen_triangles_)
+    for (const Vec2* p : {&t.a, &t.b, &t.c}) lumen_px_.push_back(apply(m, *p));
+  outline_px_.resize(meta_.lumen.size());
+  for (std::size_t i = 0; i < meta_.lumen.size(); ++i) {
+    outline_px_[i].clear();
+    for (const Vec2& p : meta_.lumen[i]) outline_px_[i].push_back(apply(m, p));
+  }
+  c.region(lumen_px_, outline_px_, kLumen);
 }
 
 // The rod at its true radius, never thinner than min_rod_width_px, with a dark edge.

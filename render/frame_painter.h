@@ -13,6 +13,7 @@
 #include "render/canvas.h"
 #include "render/frame_source.h"
 #include "render/number_format.h"
+#include "render/polygon_fill.h"
 #include "render/view.h"
 
 namespace vascsim::render {
@@ -71,6 +72,7 @@ class FramePainter {
   glm::dmat3 camera(const FrameState& frame) const;
   void paint_world(Canvas& c, const glm::dmat3& m, const FrameState& f, const std::vector<Vec2>& trail,
                    const FrameState* overlay);
+  void paint_lumen(Canvas& c, const glm::dmat3& m);
   void paint_rod(Canvas& c, const glm::dmat3& m, const FrameState& f, Rgba body, Rgba edge, Rgba tip);
   void paint_arrows(Canvas& c, const std::vector<double>& forces, double px_per_newton, double max_px, float width,
                     Rgba colour);
@@ -91,6 +93,11 @@ class FramePainter {
   double scale_ = 1;              // px per m
   int font_px_;
   std::vector<glm::vec2> scratch_;
+  bool lumen_is_box_ = false;              // meta_.lumen is one axis-aligned rectangle, lumen_box_
+  Box2 lumen_box_;                         // m
+  std::vector<Triangle> lumen_triangles_;  // m, meta_.lumen's interior unless lumen_is_box_
+  std::vector<glm::vec2> lumen_px_;        // px, lumen_triangles_ on this frame, 3 per triangle
+  std::vector<std::vector<glm::vec2>> outline_px_;  // px, meta_.lumen on this frame
 };
 
 }  // namespace vascsim::render

@@ -64,7 +64,10 @@ LogMetadata synthetic_metadata(const SyntheticLogSpec& spec) {
 }
 
 void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec) {
-  const LogMetadata m = synthetic_metadata(spec);
+  write_synthetic_log(path, spec, synthetic_metadata(spec));
+}
+
+void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec, const LogMetadata& m) {
   const auto nodes = static_cast<std::uint32_t>(spec.nodes);
   FrameLogHeader h;
   h.node_count = nodes;

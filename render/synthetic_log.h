@@ -33,5 +33,8 @@ struct SyntheticLogSpec {
 LogMetadata synthetic_metadata(const SyntheticLogSpec& spec);
 // Writes the log to `path`. Throws InputError if the file cannot be written.
 void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec);
+// The same with other metadata (a vessel lumen, say): the rod slides along `metadata.path` (at
+// least 2 points), with the spec's rod, frames, speed and forces (its cell sets the wiggle).
+void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec, const LogMetadata& metadata);
 
 }  // namespace vascsim::render
