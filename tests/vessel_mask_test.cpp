@@ -84,7 +84,7 @@ bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) 
 
 // Rings: closed (no repeated last point, every edge shorter than a cell's diagonal), and no two
 // edges of any rings cross or touch, except neighbours in one ring at their shared vertex. Brute force.
-testing::AssertionResult rings_are_simple(const std::vector<Polyline>& rings) {
+testing::AssertionResult rings_are_simple(const std::vector<Polyline>& rings, double pixel = kPixel) {
   struct Edge { Vec2 a, b; std::size_t ring, index, size; };
   std::vector<Edge> edges;
   for (std::size_t r = 0; r < rings.size(); ++r) {
@@ -94,8 +94,8 @@ testing::AssertionResult rings_are_simple(const std::vector<Polyline>& rings) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const Vec2& a = ring[i];
       const Vec2& b = ring[(i + 1) % ring.size()];
-      if ((b - a).norm() > std::sqrt(2.0) * kPixel * 1.0001 || a == b)
-        return testing::AssertionFailure() << "ring " << r << " edge " << i << " has length " << (b - a).norm() / kPixel << " px";
+      if ((b - a).norm() > std::sqrt(2.0) * pixel * 1.0001 || a == b)
+        return testing::AssertionFailure() << "ring " << r << " edge " << i << " has length " << (b - a).norm() / pixel << " px";
       edges.push_back({a, b, r, i, ring.size()});
     }
   }
@@ -287,6 +287,60 @@ TEST(VesselMask, RefusesAGoalTheLumenDoesNotReach) {
   spec.goal = Vec2(30.5, 10.5) * kPixel;
   expect_refusal(spec, {"/vessels/goal: the goal (0.0305, 0.0105) m at pixel (30, 9) of drawn.png cannot be reached",
                         "start (0.0105, 0.0105) m at pixel (10, 9)"});
+}
+
+// The shipped phantom, from the start and goal scripts/draw_vessel_phantom prints: one outer ring,
+// a centreline from the inlet to the upper branch through lumen pixels, the radius within the
+// drawn range (0.028 m at the narrowing .. 0.05 m at the inlet, more at the junction), and no turn
+// sharper than 60 degrees over a lumen diameter.
+TEST(VesselMask, ShippedPhantomTracesFromTheInletToABranch) {
+  const std::string path = std::string(VASCSIM_SOURCE_DIR) + "/assets/vessel_phantom.png";
+  const io::GreyImage image = io::load_grey_png(path);
+  VesselMaskSpec spec;
+  spec.file = "assets/vessel_phantom.png";
+  spec.resolved = path;
+  spec.pixel_size = 2.5e-3;
+  spec.width = image.width;
+  spec.height = image.height;
+  spec.grey = image.grey;
+  spec.start = Vec2(1.4, 0.42);
+  spec.goal = Vec2(0.2455, 0.8842);
+  ASSERT_EQ(spec.width, 600);
+  ASSERT_EQ(spec.height, 400);
+  const MaskTrace t = trace_vessel_mask(spec);
+  ASSERT_EQ(t.outline.size(), 1u);
+  EXPECT_GT(signed_area(t.outline[0]), 0.0);
+  EXPECT_TRUE(rings_are_simple(t.outline, spec.pixel_size));
+  ASSERT_GE(t.centreline.size(), 2u);
+  ASSERT_EQ(t.radius.size(), t.centreline.size());
+  EXPECT_EQ(t.centreline.front(), spec.start);
+  EXPECT_EQ(t.centreline.back(), spec.goal);
+  double r_min = 1.0, r_max = 0.0, worst_turn = 0.0;
+  for (std::size_t i = 0; i < t.centreline.size(); ++i) {
+    const Vec2& p = t.centreline[i];
+    const int col = static_cast<int>(p.x() / spec.pixel_size), row = spec.height - 1 - static_cast<int>(p.y() / spec.pixel_size);
+    EXPECT_GE(spec.grey[static_cast<std::size_t>(row) * spec.width + col], 128) << "point " << i << " off the lumen";
+    if (i > 0) {
+      EXPECT_LE((p - t.centreline[i - 1]).norm(), spec.pixel_size * (1 + 1e-9)) << "a gap at point " << i;
+    }
+    r_min = std::min(r_min, t.radius[i]);
+    r_max = std::max(r_max, t.radius[i]);
+    // The heading change from segment i to every later segment starting within a diameter.
+    if (i + 1 >= t.centreline.size()) continue;
+    const Vec2 u = (t.centreline[i + 1] - p).normalized();
+    double along = 0.0;
+    for (std::size_t j = i + 1; j + 1 < t.centreline.size() && along < 2 * t.radius[i]; ++j) {
+      along += (t.centreline[j] - t.centreline[j - 1]).norm();
+      const Vec2 v = (t.centreline[j + 1] - t.centreline[j]).normalized();
+      worst_turn = std::max(worst_turn, std::acos(std::clamp(u.dot(v), -1.0, 1.0)));
+    }
+  }
+  std::cout << "[ measured ] phantom: " << t.centreline.size() << " centreline points, radius " << r_min << ".."
+            << r_max << " m, sharpest turn over a diameter " << worst_turn * 180 / M_PI << " degrees, "
+            << t.outline[0].size() << " wall vertices\n";
+  EXPECT_GE(r_min, 0.02);
+  EXPECT_LE(r_max, 0.06);
+  EXPECT_LT(worst_turn, M_PI / 3);
 }
 
 }  // namespace
