@@ -13,6 +13,7 @@
 #include <iostream>
 #include <string>
 
+#include "sim/env/iso_contour.h"
 #include "sim/env/vessel_mask.h"
 #include "sim/io/png_file.h"
 #include "sim/scene/input_error.h"
@@ -246,6 +247,34 @@ TEST(VesselMask, YBranchesGiveTheirAxesAndRadii) {
     EXPECT_LT(radius_err, 1.0);
     EXPECT_LT(junction_err, r_branch) << "inside the lumen at the junction too";
   }
+}
+
+// The ambiguous cells: two lumen pixels touching at a corner are one region when the cell's mean
+// reaches the level (a saddle at the centre of the four), else two; the same rule for two black
+// pixels inside lumen, which then become one hole or two. Every ring stays simple.
+TEST(VesselMask, SaddlesFollowTheCellMean) {
+  const auto rings = [](const std::vector<std::uint8_t>& grey, int side) {
+    return iso_contours(grey, side, side, 127.5, kPixel);
+  };
+  std::vector<Polyline> r = rings({255, 0, 0, 255}, 2);  // mean 127.5: joined
+  EXPECT_EQ(r.size(), 1u);
+  EXPECT_TRUE(rings_are_simple(r));
+  r = rings({200, 0, 0, 200}, 2);  // mean 100: apart
+  EXPECT_EQ(r.size(), 2u);
+  EXPECT_TRUE(rings_are_simple(r));
+  for (const Polyline& ring : r) EXPECT_GT(signed_area(ring), 0.0);
+  const auto holes = [&](std::uint8_t white) {
+    std::vector<std::uint8_t> g(16, white);
+    g[1 * 4 + 1] = g[2 * 4 + 2] = 0;  // two black pixels touching at a corner, inside white
+    std::vector<Polyline> out = rings(g, 4);
+    EXPECT_TRUE(rings_are_simple(out));
+    int cw = 0;
+    for (const Polyline& ring : out) cw += signed_area(ring) < 0.0;
+    EXPECT_EQ(static_cast<int>(out.size()) - cw, 1) << "one outer ring";
+    return cw;
+  };
+  EXPECT_EQ(holes(255), 2) << "mean 127.5: the white corners join, the black ones stay apart";
+  EXPECT_EQ(holes(150), 1) << "mean 75: the black corners join into one hole";
 }
 
 // The refusals: each names the scene field, the file and the pixel.
