@@ -42,9 +42,10 @@ Pixel pixel_of(const VesselMaskSpec& spec, const Vec2& p) {
   Pixel px;
   const double c = std::floor(p.x() / spec.pixel_size), r = spec.height - 1 - std::floor(p.y() / spec.pixel_size);
   px.in_image = c >= 0 && c < spec.width && r >= 0 && r < spec.height;
-  // Clamped to the int range only for the message; an outside point is never indexed.
-  px.col = static_cast<int>(std::clamp(c, -1e9, 1e9));
-  px.row = static_cast<int>(std::clamp(r, -1e9, 1e9));
+  // Clamped to the int range (a NaN to -1) only for the message; an outside point is never indexed.
+  const auto to_int = [](double v) { return std::isnan(v) ? -1 : static_cast<int>(std::clamp(v, -1e9, 1e9)); };
+  px.col = to_int(c);
+  px.row = to_int(r);
   return px;
 }
 
