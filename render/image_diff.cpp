@@ -1,88 +1,25 @@
 #include "render/image_diff.h"
 
-#include <zlib.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
-
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#include <stb_image.h>
+#include <utility>
 
 #include "render/png_writer.h"
+#include "sim/io/png_file.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
 
-namespace {
-
-constexpr std::size_t kMaxPngBytes = std::size_t(256) << 20;
-
-std::uint32_t big_endian_u32(const unsigned char* p) {
-  return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) | std::uint32_t(p[3]);
-}
-
-// The PNG container, checked as libpng does and stb_image does not: the signature, every chunk's
-// length and CRC-32 (zlib's), and an empty IEND chunk that ends the file. A golden image that
-// was damaged in transit must not compare as "within tolerance".
-void check_png_container(const std::string& bytes, const std::string& path) {
-  static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
-  if (bytes.size() < 8 || std::memcmp(b, signature, 8) != 0) throw InputError(path + ": not a PNG file (no PNG signature)");
-  std::size_t at = 8;
-  for (;;) {
-    if (at + 12 > bytes.size()) throw InputError(path + ": truncated PNG (no IEND chunk at the end)");
-    const std::uint32_t length = big_endian_u32(b + at);
-    const std::string type(bytes, at + 4, 4);
-    if (length > bytes.size() - at - 12)
-      throw InputError(path + ": truncated PNG (chunk " + type + " at offset " + std::to_string(at) + " runs past the end)");
-    const std::uint32_t crc = static_cast<std::uint32_t>(crc32(crc32(0, nullptr, 0), b + at + 4, length + 4));
-    if (crc != big_endian_u32(b + at + 8 + length))
-      throw InputError(path + ": damaged PNG (bad CRC in chunk " + type + " at offset " + std::to_string(at) + ")");
-    at += 12 + length;
-    if (type == "IEND") {
-      if (length != 0 || at != bytes.size()) throw InputError(path + ": damaged PNG (data after or inside IEND)");
-      return;
-    }
-  }
-}
-
-std::string read_png_bytes(const std::string& path) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) throw InputError(path + ": cannot read PNG (no such file)");
-  if (!std::filesystem::is_regular_file(status)) throw InputError(path + ": cannot read PNG (not a regular file)");
-  if (std::filesystem::file_size(path, ec) > kMaxPngBytes)
-    throw InputError(path + ": cannot read PNG (larger than " + std::to_string(kMaxPngBytes >> 20) + " MB)");
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) throw InputError(path + ": cannot read PNG (read error)");
-  return bytes;
-}
-
-}  // namespace
-
+// The strict reading (container checks, stb_image) is sim/io/png_file.h's, shared with the
+// scene reader's vessel masks.
 Image load_png(const std::string& path) {
-  const std::string bytes = read_png_bytes(path);
-  check_png_container(bytes, path);
-  int w = 0, h = 0, comp = 0;
-  unsigned char* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
-                                              static_cast<int>(bytes.size()), &w, &h, &comp, 3);
-  if (!data) {
-    const char* why = stbi_failure_reason();
-    throw InputError(path + ": cannot decode PNG (" + (why && *why ? why : "unknown error") + ")");
-  }
+  io::PngPixels p = io::read_png(path, 3);
   Image img;
-  img.width = w;
-  img.height = h;
-  img.rgb.assign(data, data + static_cast<std::size_t>(w) * h * 3);
-  stbi_image_free(data);
+  img.width = p.width;
+  img.height = p.height;
+  img.rgb = std::move(p.data);
   return img;
 }
 

@@ -1,0 +1,40 @@
+// Strict PNG reading, shared by the renderer (golden images, `vascsim diff`) and the scene reader
+// (vessel masks): the file's container is checked as libpng does and stb_image does not (the
+// signature, every chunk's CRC-32, an empty IEND that ends the file), so a damaged file is refused
+// naming it instead of decoding to plausible pixels; then stb_image decodes it. stb_image is
+// compiled here, once, with PNG support only; no other file may define STB_IMAGE_IMPLEMENTATION.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vascsim::io {
+
+// Largest PNG file read, in bytes (256 MB): bigger is not an image vascsim wrote or needs.
+inline constexpr std::size_t kMaxPngBytes = std::size_t(256) << 20;
+// Largest width or height (px) of a mask image: 8192^2 pixels is ~0.5 GB of tracing arrays.
+inline constexpr int kMaxMaskSide = 8192;
+
+struct PngPixels {
+  int width = 0, height = 0;        // px
+  int channels = 0;                 // bytes per pixel: 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA
+  std::vector<std::uint8_t> data;   // row-major, row 0 at the top, `channels` bytes per pixel
+};
+
+// Reads `path` and decodes it to `channels` (1..4) bytes per pixel, converting as stb_image does
+// (to grey: luminance (77 R + 150 G + 29 B) / 256; alpha dropped). max_side > 0: refuses an image
+// wider or taller than max_side px, read from the header before any pixel is decoded. Throws
+// InputError naming the file if it is missing, not a regular file, over kMaxPngBytes, not a
+// well-formed PNG (signature, CRCs, final IEND), too large or not decodable.
+PngPixels read_png(const std::string& path, int channels, int max_side = 0);
+
+// An 8-bit grey image: 0 black .. 255 white.
+struct GreyImage {
+  int width = 0, height = 0;         // px
+  std::vector<std::uint8_t> grey;    // row-major, row 0 at the top
+};
+// read_png(path, 1, max_side) as a grey image (a colour PNG is converted to its luminance).
+GreyImage load_grey_png(const std::string& path, int max_side = kMaxMaskSide);
+
+}  // namespace vascsim::io

@@ -1,0 +1,129 @@
+// Reading mask images (sim/io/png_file.h): load_grey_png gives the grey levels row by row from the
+// top, converts colour to grey, and refuses an image over the side limit (from its header, before
+// decoding) or a file that is not a PNG, naming the file. The PNGs are written here byte by byte
+// (stored, uncompressed deflate blocks), so the test needs no encoder.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "sim/io/png_file.h"
+#include "sim/scene/input_error.h"
+#include "tests/cli_test_support.h"
+
+namespace vascsim::io {
+namespace {
+
+std::uint32_t crc32_of(const std::string& bytes) {
+  std::uint32_t c = 0xFFFFFFFFu;
+  for (unsigned char b : bytes) {
+    c ^= b;
+    for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+  }
+  return c ^ 0xFFFFFFFFu;
+}
+
+void put_u32(std::string& s, std::uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) s.push_back(static_cast<char>((v >> shift) & 0xFF));
+}
+
+void put_chunk(std::string& png, const std::string& type, const std::string& data) {
+  put_u32(png, static_cast<std::uint32_t>(data.size()));
+  const std::string body = type + data;
+  png += body;
+  put_u32(png, crc32_of(body));
+}
+
+// An 8-bit PNG of colour type 0 (grey, 1 byte a pixel) or 2 (RGB, 3 bytes), rows from the top.
+std::string png_bytes(int width, int height, int colour_type, const std::vector<std::uint8_t>& pixels) {
+  const int channels = colour_type == 2 ? 3 : 1;
+  std::string raw;  // each row: filter type 0, then its bytes
+  for (int y = 0; y < height; ++y) {
+    raw.push_back(0);
+    raw.append(reinterpret_cast<const char*>(pixels.data()) + static_cast<std::size_t>(y) * width * channels,
+               static_cast<std::size_t>(width) * channels);
+  }
+  std::string z = "\x78\x01";  // zlib header: deflate, no dictionary
+  for (std::size_t at = 0; at < raw.size() || at == 0; at += 65535) {
+    const std::size_t n = std::min<std::size_t>(65535, raw.size() - at);
+    z.push_back(at + n >= raw.size() ? 1 : 0);  // BFINAL, BTYPE 00 (stored)
+    z.push_back(static_cast<char>(n & 0xFF));
+    z.push_back(static_cast<char>(n >> 8));
+    z.push_back(static_cast<char>(~n & 0xFF));
+    z.push_back(static_cast<char>((~n >> 8) & 0xFF));
+    z.append(raw, at, n);
+    if (raw.empty()) break;
+  }
+  std::uint32_t a = 1, b = 0;  // Adler-32
+  for (unsigned char c : raw) {
+    a = (a + c) % 65521;
+    b = (b + a) % 65521;
+  }
+  put_u32(z, (b << 16) | a);
+  std::string ihdr;
+  put_u32(ihdr, static_cast<std::uint32_t>(width));
+  put_u32(ihdr, static_cast<std::uint32_t>(height));
+  ihdr += std::string{8, static_cast<char>(colour_type), 0, 0, 0};  // depth, colour, deflate, filter, no interlace
+  std::string png = "\x89PNG\r\n\x1a\n";
+  put_chunk(png, "IHDR", ihdr);
+  put_chunk(png, "IDAT", z);
+  put_chunk(png, "IEND", "");
+  return png;
+}
+
+std::string write_png(const std::string& dir, const std::string& name, int width, int height, int colour_type,
+                      const std::vector<std::uint8_t>& pixels) {
+  const std::string path = dir + "/" + name;
+  std::ofstream(path, std::ios::binary) << png_bytes(width, height, colour_type, pixels);
+  return path;
+}
+
+std::string refusal(const std::string& path, int max_side = kMaxMaskSide) {
+  try {
+    load_grey_png(path, max_side);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(VesselMaskPng, ReadsGreyRowsFromTheTopAndColourAsLuminance) {
+  const std::string dir = test::fresh_temp_dir("vessel_mask_png_read");
+  const GreyImage g = load_grey_png(write_png(dir, "grey.png", 3, 2, 0, {0, 10, 20, 200, 230, 255}));
+  EXPECT_EQ(g.width, 3);
+  EXPECT_EQ(g.height, 2);
+  EXPECT_EQ(g.grey, (std::vector<std::uint8_t>{0, 10, 20, 200, 230, 255}));
+  const GreyImage c = load_grey_png(write_png(dir, "rgb.png", 2, 1, 2, {255, 255, 255, 0, 0, 0}));
+  EXPECT_EQ(c.grey, (std::vector<std::uint8_t>{255, 0}));
+}
+
+TEST(VesselMaskPng, RefusesAnImageOverTheSizeLimit) {
+  const std::string dir = test::fresh_temp_dir("vessel_mask_png_size");
+  const std::string small = write_png(dir, "small.png", 20, 9, 0, std::vector<std::uint8_t>(20 * 9, 255));
+  std::string msg = refusal(small, 16);
+  EXPECT_EQ(msg.rfind(small + ": ", 0), 0u) << msg;
+  EXPECT_NE(msg.find("20 x 9 px, larger than 16 px a side"), std::string::npos) << msg;
+  EXPECT_EQ(refusal(small, 20), "(no error)");
+  // The default limit, kMaxMaskSide = 8192 px, with one pixel more.
+  const std::string tall = write_png(dir, "tall.png", 1, kMaxMaskSide + 1, 0, std::vector<std::uint8_t>(kMaxMaskSide + 1, 0));
+  msg = refusal(tall);
+  EXPECT_EQ(msg.rfind(tall + ": ", 0), 0u) << msg;
+  EXPECT_NE(msg.find("1 x 8193 px, larger than 8192 px a side"), std::string::npos) << msg;
+}
+
+TEST(VesselMaskPng, RefusesMissingAndNonPngFilesNamingThem) {
+  const std::string dir = test::fresh_temp_dir("vessel_mask_png_bad");
+  test::write_text(dir + "/mask.png", "P2 2 2 255 0 0 0 0\n");  // a PGM, not a PNG
+  std::string msg = refusal(dir + "/mask.png");
+  EXPECT_EQ(msg, dir + "/mask.png: not a PNG file (no PNG signature)");
+  msg = refusal(dir + "/missing.png");
+  EXPECT_EQ(msg, dir + "/missing.png: cannot read PNG (no such file)");
+  msg = refusal(dir);
+  EXPECT_EQ(msg, dir + ": cannot read PNG (not a regular file)");
+}
+
+}  // namespace
+}  // namespace vascsim::io
