@@ -2,9 +2,12 @@
 // message names the file and the JSON path, the exit code is 2, and nothing is written.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "tests/cli_test_support.h"
+#include "tests/png_bytes_support.h"
 
 namespace vascsim::test {
 namespace {
@@ -45,6 +48,19 @@ const BadVessels kBad[] = {
      "/vessels/segments/0/radius_end: unknown key"},
 };
 
+// A mask scene beside the test's own images: `file` is relative to the scene.
+#define MASK(file, start, goal) R"({"vessels": {"mask": {"file": ")" file R"(", "pixel_size": 0.01}, "start": )" start R"(, "goal": )" goal "}}"
+
+const BadVessels kBadMasks[] = {
+    {"mask_missing", MASK("absent.png", "[0.1, 0.1]", "[0.2, 0.2]"), "/vessels/mask/file: "},
+    {"mask_not_png", MASK("text.png", "[0.1, 0.1]", "[0.2, 0.2]"), "/vessels/mask/file: "},
+    {"mask_too_large", MASK("huge.png", "[0.1, 0.1]", "[0.2, 0.2]"), "/vessels/mask/file: "},
+    {"mask_black", MASK("black.png", "[0.1, 0.1]", "[0.2, 0.2]"), "/vessels/mask: "},
+    {"mask_start_outside", MASK("two_discs.png", "[0.01, 0.01]", "[0.3, 0.3]"), "/vessels/start: "},
+    {"mask_goal_outside", MASK("two_discs.png", "[0.3, 0.3]", "[0.01, 0.01]"), "/vessels/goal: "},
+    {"mask_not_connected", MASK("two_discs.png", "[0.3, 0.3]", "[1.3, 0.3]"), "/vessels/goal: "},
+};
+
 class VesselSceneErrors : public ::testing::TestWithParam<BadVessels> {};
 
 TEST_P(VesselSceneErrors, NameFileAndPointerAndExitTwo) {
@@ -64,6 +80,46 @@ TEST_P(VesselSceneErrors, NameFileAndPointerAndExitTwo) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Documented, VesselSceneErrors, ::testing::ValuesIn(kBad),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// The mask's images beside the scene: black, two separate white discs (centres (0.3, 0.3) and
+// (1.3, 0.3) m at 10 mm a pixel), one pixel over the size limit, and a text file named .png.
+void write_mask_images(const std::string& dir) {
+  std::vector<std::uint8_t> black(50 * 50, 0);
+  std::ofstream(dir + "/black.png", std::ios::binary) << png_bytes(50, 50, 0, black);
+  std::vector<std::uint8_t> discs(160 * 60, 0);
+  for (int row = 0; row < 60; ++row)
+    for (int col = 0; col < 160; ++col) {
+      const double x = col + 0.5, y = 60 - row - 0.5;
+      if (std::hypot(x - 30, y - 30) < 20 || std::hypot(x - 130, y - 30) < 20) discs[static_cast<std::size_t>(row * 160 + col)] = 255;
+    }
+  std::ofstream(dir + "/two_discs.png", std::ios::binary) << png_bytes(160, 60, 0, discs);
+  std::ofstream(dir + "/huge.png", std::ios::binary) << png_bytes(1, 8193, 0, std::vector<std::uint8_t>(8193, 255));
+  write_text(dir + "/text.png", "not an image\n");
+}
+
+class VesselMaskErrors : public ::testing::TestWithParam<BadVessels> {};
+
+TEST_P(VesselMaskErrors, NameSceneFilePointerAndImageAndExitTwo) {
+  const BadVessels& bad = GetParam();
+  const std::string dir = fresh_temp_dir(std::string("mask_") + bad.name);
+  write_mask_images(dir);
+  const std::string scene = dir + "/bad.json", out = dir + "/network.json";
+  write_text(scene, bad.text);
+  const CommandResult r = run_vascsim("vessels --scene " + scene + " --out " + out);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(scene + ": " + bad.message), std::string::npos) << "expected: " << bad.message << "\ngot: " << r.output;
+  // Every refusal names the image, and those about a place in it name the pixel.
+  const std::string image = std::string(bad.text).substr(std::string(bad.text).find("file\": \"") + 8);
+  EXPECT_NE(r.output.find(image.substr(0, image.find('"'))), std::string::npos) << r.output;
+  if (std::string(bad.name).find("outside") != std::string::npos || std::string(bad.name).find("connected") != std::string::npos) {
+    EXPECT_NE(r.output.find("pixel ("), std::string::npos) << r.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out));
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Documented, VesselMaskErrors, ::testing::ValuesIn(kBadMasks),
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(VesselsCommand, WritesTheNetworkAndRefusesAMaze) {

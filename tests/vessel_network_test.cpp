@@ -31,6 +31,8 @@ Environment environment_of(const std::string& name) {
 }
 
 const char* const kGraphScenes[] = {"bifurcation", "aneurysm", "stenosis", "tortuous", "vessel_tree"};
+const char* const kAllScenes[] = {"bifurcation", "aneurysm", "stenosis", "tortuous", "vessel_tree", "vessel_mask"};
+const auto kSceneName = [](const auto& info) { return std::string(info.param); };
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -185,7 +187,7 @@ TEST_P(ShippedNetwork, OutlineIsClosedAndSimple) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ShippedNetwork, ::testing::ValuesIn(kGraphScenes));
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedNetwork, ::testing::ValuesIn(kAllScenes), kSceneName);
 
 // No wall across a branch's mouth: just past the parent's wall, a point on each daughter's
 // centreline is as far from the wall as the daughter's radius.
@@ -254,7 +256,7 @@ TEST_P(ShippedVesselScene, ReachesItsGoalInsideTheLumen) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ShippedVesselScene, ::testing::ValuesIn(kGraphScenes));
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedVesselScene, ::testing::ValuesIn(kAllScenes), kSceneName);
 
 }  // namespace
 }  // namespace vascsim

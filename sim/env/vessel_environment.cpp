@@ -5,6 +5,7 @@
 
 #include "sim/env/vessel_graph.h"
 #include "sim/env/vessel_lumen.h"
+#include "sim/env/vessel_mask.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim {
@@ -89,11 +90,28 @@ Environment graph_environment(const VesselsSpec& spec, double rod_length) {
   return env;
 }
 
+// The traced outline is the lumen as drawn: no rounding beyond the pixel's own (the tracer's
+// wall is within a fifth of a pixel of the drawn edge), faceted at the pixel scale.
+Environment mask_environment(const VesselMaskSpec& mask, double rod_length) {
+  const MaskTrace trace = trace_vessel_mask(mask);
+  Environment env;
+  env.centreline = trace.centreline;
+  env.centreline_radius = trace.radius;
+  env.inlet.tip = env.centreline.front();
+  // The inlet heads along the centreline's first stretch of one local diameter, which the
+  // smoothing has made straight: the first pixel step alone may point anywhere within 45 degrees.
+  const double reach = 2.0 * trace.radius.front();
+  std::size_t k = 1;
+  while (k + 1 < env.centreline.size() && (env.centreline[k] - env.centreline[0]).norm() < reach) ++k;
+  env.inlet.inward = (env.centreline[k] - env.centreline[0]).normalized();
+  finish(env, trace.outline, 0.0, 0.1 * mask.pixel_size, rod_length);
+  return env;
+}
+
 }  // namespace
 
 Environment build_vessel_environment(const VesselsSpec& spec, double rod_length) {
-  if (spec.from_mask) throw InputError("/vessels/mask: image masks are being merged (issue 12)");
-  return graph_environment(spec, rod_length);
+  return spec.from_mask ? mask_environment(spec.mask, rod_length) : graph_environment(spec, rod_length);
 }
 
 }  // namespace vascsim

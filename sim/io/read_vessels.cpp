@@ -99,7 +99,7 @@ void read_vessels(FieldReader& in, VesselsSpec& out) {
     out.mask.start = in.vec2("start", out.mask.start);
     out.mask.goal = in.vec2("goal", out.mask.goal);
     in.finish();
-    out.mask.grey = load_mask_pixels(out.mask, in.pointer_of("mask") + "/file");
+    out.mask.grey = load_mask_pixels(out.mask, in.file(), in.pointer_of("mask") + "/file");
     return;
   }
   const json* nodes = in.raw("nodes");

@@ -12,9 +12,9 @@ namespace vascsim::io {
 
 void read_maze(FieldReader& in, MazeSpec& out);
 void read_vessels(FieldReader& in, VesselsSpec& out);
-// The mask's pixels, from spec.resolved (an InputError naming `pointer` and the file if unreadable,
-// not a PNG or over 8192 px a side); fills width and height.
-std::vector<std::uint8_t> load_mask_pixels(VesselMaskSpec& spec, const std::string& pointer);
+// The mask's pixels, from spec.resolved; fills width and height. An InputError naming the scene
+// file, `pointer` and the image if it is unreadable, not a PNG or over 8192 px a side.
+std::vector<std::uint8_t> load_mask_pixels(VesselMaskSpec& spec, const std::string& scene_file, const std::string& pointer);
 void read_path(FieldReader& in, PathSpec& out);
 void read_rod(FieldReader& in, RodSpec& out);
 void read_run(FieldReader& in, RunSpec& out);

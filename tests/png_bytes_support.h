@@ -1,0 +1,16 @@
+// A hand-made PNG encoder for tests (stored deflate blocks, no compression): the reader under test
+// must not be checked with files its own library wrote, and sim-only builds have no PNG writer.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vascsim::test {
+
+// The CRC-32 PNG chunks carry (ISO 3309, as zlib's crc32).
+std::uint32_t crc32_of(const std::string& bytes);
+// An 8-bit PNG of colour type 0 (grey, 1 byte a pixel) or 2 (RGB, 3 bytes), rows from the top.
+std::string png_bytes(int width, int height, int colour_type, const std::vector<std::uint8_t>& pixels);
+
+}  // namespace vascsim::test
