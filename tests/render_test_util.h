@@ -1,5 +1,5 @@
 // Helpers shared by the render tests: scratch directories, synthetic logs, running the vascsim
-// executable, and comparing against golden images under tests/golden/.
+// executable (or a test tool), and comparing against golden images under tests/golden/.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -51,10 +51,10 @@ struct CommandResult {
   std::string out, err;
 };
 
-// Runs `vascsim ARGS` (arguments already shell-quoted where needed).
-inline CommandResult run_vascsim(const std::string& args, const ScratchDir& dir) {
+// Runs `PROGRAM ARGS` (arguments already shell-quoted where needed).
+inline CommandResult run_program(const std::string& program, const std::string& args, const ScratchDir& dir) {
   const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = std::string("'") + VASCSIM_EXE + "' " + args + " >'" + out + "' 2>'" + err + "'";
+  const std::string cmd = "'" + program + "' " + args + " >'" + out + "' 2>'" + err + "'";
   const int status = std::system(cmd.c_str());
   CommandResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -68,6 +68,9 @@ inline CommandResult run_vascsim(const std::string& args, const ScratchDir& dir)
   r.err = slurp(err);
   return r;
 }
+
+// Runs `vascsim ARGS`.
+inline CommandResult run_vascsim(const std::string& args, const ScratchDir& dir) { return run_program(VASCSIM_EXE, args, dir); }
 
 inline std::string read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
