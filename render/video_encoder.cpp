@@ -13,19 +13,10 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
+#include "render/av_error.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
-
-namespace {
-
-std::string av_error(int code) {
-  char buf[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, buf, sizeof buf);
-  return buf;
-}
-
-}  // namespace
 
 struct VideoEncoder::Impl {
   VideoSettings settings;

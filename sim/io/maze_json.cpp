@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/io/scene_reader.h"
+#include "sim/io/scene_sections.h"
 #include "sim/run/compile.h"
 #include "sim/run/navigation.h"
 
@@ -11,14 +12,6 @@ namespace vascsim {
 using nlohmann::json;
 
 namespace {
-
-json point(const Vec2& p) { return json::array({p.x(), p.y()}); }
-
-json polyline(const Polyline& line) {
-  json out = json::array();
-  for (const auto& p : line) out.push_back(point(p));
-  return out;
-}
 
 // Cells of a grid maze: the open-sides bitmask row by row, and the solved cell path.
 json grid_json(const GridMaze& grid, const std::vector<Cell>& path) {
@@ -51,26 +44,26 @@ std::string maze_document(const Scene& scene) {
 
   json walls = json::array();
   for (const auto& w : env.walls)
-    walls.push_back({{"from", point(w.a)}, {"to", point(w.b)}, {"thickness", w.thickness}});
+    walls.push_back({{"from", io::to_json(w.a)}, {"to", io::to_json(w.b)}, {"thickness", w.thickness}});
   json doc;
   doc["format"] = "vascsim-maze/1";
   Scene as_run = scene;  // with the duration a run of it would use
   as_run.run.duration = model->scene.run.duration;
   doc["scene"] = json::parse(scene_to_json(as_run));
-  doc["bounds"] = {point(env.bounds.min), point(env.bounds.max)};
+  doc["bounds"] = {io::to_json(env.bounds.min), io::to_json(env.bounds.max)};
   doc["lumen_width"] = env.lumen_width;
-  doc["start"] = point(env.start);
-  doc["goal"] = point(env.goal);
+  doc["start"] = io::to_json(env.start);
+  doc["goal"] = io::to_json(env.goal);
   doc["walls"] = walls;
   doc["grid"] = grid_json(grid, cells);
   doc["path"] = {{"solver", use_bfs ? "bfs" : "wall_follower"},
-                 {"corners", polyline(corners)},
+                 {"corners", io::to_json(corners)},
                  {"corner_radius", scene.path.corner_radius},
                  {"length", trajectory.length()},
                  {"speed", scene.path.speed},
                  {"ramp_time", scene.path.ramp_time},
                  {"duration", trajectory.duration()},
-                 {"samples", polyline(trajectory.sample(1e-4))}};
+                 {"samples", io::to_json(trajectory.sample(1e-4))}};
   return doc.dump(1) + "\n";
 }
 

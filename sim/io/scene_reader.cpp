@@ -104,6 +104,11 @@ std::string scene_to_json(const Scene& scene) {
 
 namespace io {
 json to_json(const Vec2& p) { return json::array({p.x(), p.y()}); }
+json to_json(const Polyline& line) {
+  json out = json::array();
+  for (const auto& p : line) out.push_back(to_json(p));
+  return out;
+}
 }  // namespace io
 
 }  // namespace vascsim

@@ -38,5 +38,6 @@ nlohmann::json write_loads(const LoadSpec& spec);
 nlohmann::json write_solver(const SolverSpec& spec);
 
 nlohmann::json to_json(const Vec2& p);
+nlohmann::json to_json(const Polyline& line);  // [[x, y], ...]
 
 }  // namespace vascsim::io

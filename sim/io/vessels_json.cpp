@@ -4,6 +4,7 @@
 
 #include "sim/env/vessel_graph.h"
 #include "sim/io/scene_reader.h"
+#include "sim/io/scene_sections.h"
 #include "sim/run/compile.h"
 #include "sim/run/navigation.h"
 
@@ -13,19 +14,11 @@ using nlohmann::json;
 
 namespace {
 
-json point(const Vec2& p) { return json::array({p.x(), p.y()}); }
-
-json polyline(const Polyline& line) {
-  json out = json::array();
-  for (const auto& p : line) out.push_back(point(p));
-  return out;
-}
-
 // Nodes, segments sampled with their radius, and the sacs; the route as node names.
 json graph_json(const VesselsSpec& spec) {
   const VesselGraph g = resolve_vessel_graph(spec);
   json nodes = json::object();
-  for (std::size_t i = 0; i < g.names.size(); ++i) nodes[g.names[i]] = point(g.positions[i]);
+  for (std::size_t i = 0; i < g.names.size(); ++i) nodes[g.names[i]] = io::to_json(g.positions[i]);
   json segments = json::array();
   for (const auto& s : g.segments) {
     json samples = json::array();
@@ -36,7 +29,7 @@ json graph_json(const VesselsSpec& spec) {
                         {"samples", samples}});
   }
   json sacs = json::array();
-  for (const auto& s : g.sacs) sacs.push_back({{"centre", point(s.centre)}, {"radius", s.radius}, {"segment", s.segment}});
+  for (const auto& s : g.sacs) sacs.push_back({{"centre", io::to_json(s.centre)}, {"radius", s.radius}, {"segment", s.segment}});
   json route = json::array({spec.start});
   for (const RouteStep& step : vessel_route(g, spec)) {
     const auto& s = g.segments[static_cast<std::size_t>(step.segment)];
@@ -55,18 +48,18 @@ std::string vessels_document(const Scene& scene) {
   const Trajectory& trajectory = *nav.trajectory;
 
   json walls = json::array();
-  for (const auto& w : env.walls) walls.push_back({{"from", point(w.a)}, {"to", point(w.b)}, {"thickness", w.thickness}});
+  for (const auto& w : env.walls) walls.push_back({{"from", io::to_json(w.a)}, {"to", io::to_json(w.b)}, {"thickness", w.thickness}});
   json lumen = json::array();
-  for (const auto& ring : env.lumen) lumen.push_back(polyline(ring));
+  for (const auto& ring : env.lumen) lumen.push_back(io::to_json(ring));
   json doc;
   doc["format"] = "vascsim-vessels/1";
   Scene as_run = scene;  // with the duration a run of it would use
   as_run.run.duration = model->scene.run.duration;
   doc["scene"] = json::parse(scene_to_json(as_run));
-  doc["bounds"] = {point(env.bounds.min), point(env.bounds.max)};
-  doc["start"] = point(env.start);
-  doc["goal"] = point(env.goal);
-  doc["inlet"] = {{"tip", point(env.inlet.tip)}, {"inward", point(env.inlet.inward)}, {"opening", env.inlet.opening}};
+  doc["bounds"] = {io::to_json(env.bounds.min), io::to_json(env.bounds.max)};
+  doc["start"] = io::to_json(env.start);
+  doc["goal"] = io::to_json(env.goal);
+  doc["inlet"] = {{"tip", io::to_json(env.inlet.tip)}, {"inward", io::to_json(env.inlet.inward)}, {"opening", env.inlet.opening}};
   doc["lumen"] = lumen;
   doc["walls"] = walls;
   if (scene.vessels.from_mask)
@@ -74,7 +67,7 @@ std::string vessels_document(const Scene& scene) {
                    {"height", scene.vessels.mask.height}, {"pixel_size", scene.vessels.mask.pixel_size}};
   else
     doc["graph"] = graph_json(scene.vessels);
-  doc["path"] = {{"centreline", polyline(env.centreline)},
+  doc["path"] = {{"centreline", io::to_json(env.centreline)},
                  {"radius", env.centreline_radius},
                  {"corner_radius", env.corner_radius},
                  {"narrowest_diameter", env.lumen_width},
@@ -82,7 +75,7 @@ std::string vessels_document(const Scene& scene) {
                  {"speed", scene.path.speed},
                  {"ramp_time", scene.path.ramp_time},
                  {"duration", trajectory.duration()},
-                 {"samples", polyline(trajectory.sample(1e-4))}};
+                 {"samples", io::to_json(trajectory.sample(1e-4))}};
   return doc.dump(1) + "\n";
 }
 
