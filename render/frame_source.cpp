@@ -20,14 +20,6 @@ double FrameState::max_contact() const {
   return m;
 }
 
-std::string log_path_of(const std::string& run_path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(run_path, ec))
-    throw InputError(run_path + ": no such run directory or frame log (expected RUN_DIR/frames.vlog)");
-  if (std::filesystem::is_directory(run_path, ec)) return (std::filesystem::path(run_path) / "frames.vlog").string();
-  return run_path;
-}
-
 namespace {
 
 // Every channel's value count must match its layout, so no reader of a record can run past the
@@ -53,7 +45,7 @@ int require_layout(const FrameLogHeader& h, const char* name, ChannelLayout layo
 
 }  // namespace
 
-FrameSource::FrameSource(const std::string& run_path) : log_path_(log_path_of(run_path)), reader_(log_path_) {
+FrameSource::FrameSource(const std::string& run_path) : log_path_(frame_log_path(run_path)), reader_(log_path_) {
   const FrameLogHeader& h = reader_.header();
   metadata_ = read_log_metadata(h.metadata, log_path_);
   position_ = require_layout(h, channel::kPosition, ChannelLayout::kNodeVectors, log_path_);

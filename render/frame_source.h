@@ -95,7 +95,4 @@ class FrameSource {
   mutable FrameState next_;
 };
 
-// The file a run directory's frame log lives in.
-std::string log_path_of(const std::string& run_path);
-
 }  // namespace vascsim::render

@@ -16,6 +16,7 @@ const std::vector<Command>& commands();
 
 int run_maze_command(int argc, char** argv);
 int run_vessels_command(int argc, char** argv);
+int run_export_command(int argc, char** argv);
 int run_run_command(int argc, char** argv);
 int run_bench_command(int argc, char** argv);
 int run_bench_traversal(int argc, char** argv);

@@ -1,11 +1,20 @@
 #include "sim/log/frame_log.h"
 
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 #include "sim/scene/input_error.h"
 
 namespace vascsim {
+
+std::string frame_log_path(const std::string& run_path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(run_path, ec))
+    throw InputError(run_path + ": no such run directory or frame log (expected RUN_DIR/frames.vlog)");
+  if (std::filesystem::is_directory(run_path, ec)) return (std::filesystem::path(run_path) / "frames.vlog").string();
+  return run_path;
+}
 namespace {
 
 constexpr char kMagic[8] = {'V', 'S', 'I', 'M', 'L', 'O', 'G', '\0'};

@@ -71,6 +71,10 @@ class FrameLogWriter {
   std::size_t frames_written_ = 0;
 };
 
+// The frame log of a run: RUN_DIR/frames.vlog for a directory, the path itself for a file.
+// Throws InputError if neither exists.
+std::string frame_log_path(const std::string& run_path);
+
 // Random access to a log's frames. Reads only the header on opening.
 class FrameLogReader {
  public:

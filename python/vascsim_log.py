@@ -1,0 +1,117 @@
+"""Reads vascsim frame logs (frames.vlog, format version 1; docs/frame-log.md) into numpy arrays.
+
+One file, numpy only. The records are memory-mapped, not read: opening a log of any size costs
+its header, and an array touches only the frames you index. A run still being written can be
+reopened to see its new frames; a torn last record is ignored, as the C++ reader does.
+
+    import vascsim_log
+    log = vascsim_log.open_log("out/maze_default")          # a run directory or a .vlog file
+    print(log.metadata["title"], log.frame_count, [c.name for c in log.channels])
+    tip = log.channel("position")[:, -1, :]                   # (frames, 2) in m
+    error = log.channel("tip/error")                          # (frames,) in m
+"""
+
+import json
+import os
+import struct
+
+import numpy as np
+
+MAGIC = b"VSIMLOG\0"
+VERSION = 1
+LAYOUTS = {0: "scalars", 1: "node_vectors", 2: "vector"}
+
+
+class Channel:
+    """A named block of float64 values in every frame: layout, unit (SI) and where it lies."""
+
+    def __init__(self, name, unit, layout, count, offset):
+        self.name, self.unit, self.layout, self.count, self.offset = name, unit, layout, count, offset
+
+    def __repr__(self):
+        return "Channel(%r, unit=%r, layout=%r, count=%d)" % (self.name, self.unit, self.layout, self.count)
+
+
+class FrameLog:
+    """A frame log: node_count, channels, metadata (the JSON dict), times and channel arrays."""
+
+    def __init__(self, path):
+        self.path = path
+        with open(path, "rb") as f:
+            head = f.read(20)
+            if len(head) < 20 or head[:8] != MAGIC:
+                raise ValueError("%s: not a vascsim frame log (no VSIMLOG magic)" % path)
+            version, self.node_count, count = struct.unpack("<III", head[8:20])
+            if version != VERSION:
+                raise ValueError("%s: frame log format version %d; this reader reads version %d"
+                                 % (path, version, VERSION))
+            if count > 4096:
+                raise ValueError("%s: %d channels claimed (at most 4096)" % (path, count))
+            self.channels, offset = [], 1  # the time is value 0 of a record
+            for _ in range(count):
+                name, unit = self._text(f), self._text(f)
+                layout_code, values = struct.unpack("<BI", self._exact(f, 5))
+                if layout_code not in LAYOUTS:
+                    raise ValueError("%s: channel %r has unknown layout %d" % (path, name, layout_code))
+                self.channels.append(Channel(name, unit, LAYOUTS[layout_code], values, offset))
+                offset += values
+            (length,) = struct.unpack("<I", self._exact(f, 4))
+            if length > 32 << 20:
+                raise ValueError("%s: metadata of %d bytes claimed (at most 32 MB)" % (path, length))
+            text = self._exact(f, length).decode("utf-8")
+            self.metadata = json.loads(text) if text else {}
+            self.data_offset = (f.tell() + 7) // 8 * 8
+        self.record_doubles = offset
+        self._records = None
+        self.refresh()
+
+    def _exact(self, f, n):
+        data = f.read(n)
+        if len(data) != n:
+            raise ValueError("%s: truncated header" % self.path)
+        return data
+
+    def _text(self, f):
+        (n,) = struct.unpack("<I", self._exact(f, 4))
+        if n > 1024:
+            raise ValueError("%s: a channel name or unit of %d bytes (at most 1024)" % (self.path, n))
+        return self._exact(f, n).decode("utf-8")
+
+    def refresh(self):
+        """Maps the complete records in the file now (a growing log gains frames)."""
+        size = os.path.getsize(self.path)
+        self.frame_count = max(0, (size - self.data_offset) // (8 * self.record_doubles))
+        if self.frame_count == 0:
+            self._records = np.zeros((0, self.record_doubles))
+        else:
+            self._records = np.memmap(self.path, dtype="<f8", mode="r", offset=self.data_offset,
+                                      shape=(self.frame_count, self.record_doubles))
+
+    @property
+    def times(self):
+        """Frame times in s, shape (frames,)."""
+        return self._records[:, 0]
+
+    def channel_info(self, name):
+        for c in self.channels:
+            if c.name == name:
+                return c
+        raise KeyError("%s: no channel %r (the log has %s)" % (self.path, name, ", ".join(c.name for c in self.channels)))
+
+    def channel(self, name):
+        """The channel's values for every frame: (frames, nodes, 2) for node vectors, (frames, 2) for
+        a vector, (frames,) for one scalar, (frames, count) for several. A view of the map."""
+        c = self.channel_info(name)
+        block = self._records[:, c.offset:c.offset + c.count]
+        if c.layout == "node_vectors":
+            return block.reshape(self.frame_count, c.count // 2, 2)
+        if c.layout == "scalars" and c.count == 1:
+            return block[:, 0]
+        return block
+
+
+def open_log(path):
+    """Opens a run directory (its frames.vlog) or a frame log file."""
+    if os.path.isdir(path):
+        path = os.path.join(path, "frames.vlog")
+    return FrameLog(path)

@@ -1,0 +1,57 @@
+// `vascsim export RUN_DIR --csv DIR` through the executable: the chosen channels, times and
+// decimation, one row per frame and node, the units in the header; an unknown channel and an
+// existing file without --force are refused with exit 2 and nothing replaced.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "tests/cli_test_support.h"
+
+namespace vascsim::test {
+namespace {
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+TEST(ExportCommand, WritesChosenChannelsTimesAndFrames) {
+  const std::string dir = fresh_temp_dir("export");
+  CommandResult r = run_vascsim("run " + source_path("scenes/bifurcation.json") + " --out " + dir + "/run --duration 1 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::filesystem::create_directory(dir + "/csv");
+  // 0.02 s frames: 0.5..0.9 s holds 21 frames; every 5th keeps 0.5, 0.6, 0.7, 0.8, 0.9.
+  r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv --channels position,tip/error --from 0.5 --to 0.9 --every 5");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto position = lines_of(read_text(dir + "/csv/position.csv"));
+  ASSERT_EQ(position.size(), 1u + 5u * 50u);
+  EXPECT_EQ(position[0], "time [s],node,x [m],y [m]");
+  EXPECT_EQ(position[1].rfind("0.5", 0), 0u) << position[1];
+  EXPECT_EQ(position[1].find(",0,"), position[1].find(','));
+  EXPECT_EQ(position[200].substr(0, 3), "0.8") << position[200];  // the last node of the 4th frame kept
+  EXPECT_EQ(position[201].substr(0, 3), "0.9") << position[201];
+  const auto error = lines_of(read_text(dir + "/csv/tip_error.csv"));
+  ASSERT_EQ(error.size(), 6u);
+  EXPECT_EQ(error[0], "time [s],value [m]");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/csv/velocity.csv")) << "a channel not asked for";
+
+  // Existing files are kept without --force; an unknown channel names the log's channels.
+  const std::string before = read_text(dir + "/csv/position.csv");
+  r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv --channels position");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("position.csv: already exists"), std::string::npos) << r.output;
+  EXPECT_EQ(read_text(dir + "/csv/position.csv"), before);
+  r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv --channels tip/speed");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("no channel \"tip/speed\" (the log has position, velocity"), std::string::npos) << r.output;
+  r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv --force");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(lines_of(read_text(dir + "/csv/position.csv")).size(), 1u + 51u * 50u);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace vascsim::test
