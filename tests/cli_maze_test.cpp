@@ -17,6 +17,11 @@ TEST(CliMaze, HelpListsEveryOption) {
   const CommandResult top = run_vascsim("--help");
   EXPECT_EQ(top.exit_code, 0);
   EXPECT_NE(top.output.find("maze"), std::string::npos);
+  // `vascsim help maze` prints the same as `vascsim maze --help`; an unknown one is refused.
+  const CommandResult alias = run_vascsim("help maze");
+  EXPECT_EQ(alias.exit_code, 0);
+  EXPECT_EQ(alias.output, r.output);
+  EXPECT_EQ(run_vascsim("help mazes").exit_code, 2);
 }
 
 TEST(CliMaze, UsageErrorsExitTwo) {

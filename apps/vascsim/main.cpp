@@ -16,7 +16,7 @@ namespace {
 void print_help() {
   std::printf(
       "vascsim: simulate a magnetically steered soft robot in a 2D vascular network, and render it.\n\n"
-      "usage: vascsim <command> [options]   (vascsim <command> --help for its options)\n"
+      "usage: vascsim <command> [options]   (vascsim <command> --help, or vascsim help <command>, for its options)\n"
       "       vascsim --version\n\n"
       "commands:\n");
   for (const auto& c : vascsim::cli::commands()) std::printf("  %-10s %s\n", c.name, c.summary);
@@ -28,6 +28,13 @@ int main(int argc, char** argv) {
   if (argc == 2 && !std::strcmp(argv[1], "--version")) {
     std::printf("%s\n", vascsim::version_line().c_str());
     return 0;
+  }
+  // `vascsim help COMMAND` is `vascsim COMMAND --help`, as git and cargo users expect.
+  char help_flag[] = "--help";
+  char* help_argv[] = {argv[0], argc > 2 ? argv[2] : nullptr, help_flag, nullptr};
+  if (argc == 3 && !std::strcmp(argv[1], "help")) {
+    argc = 3;
+    argv = help_argv;
   }
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
     print_help();
