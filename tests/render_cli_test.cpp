@@ -203,3 +203,30 @@ TEST(DiffCli, DamagedPngsAndSizeMismatchesNameTheFile) {
 
 }  // namespace
 }  // namespace vascsim::render
+
+namespace vascsim::render {
+namespace {
+
+// A progress line (frames, frames/s, ETA) on a terminal, as vascsim run has; none on a pipe or
+// with --quiet. `script` (util-linux) gives the command a pseudo-terminal.
+TEST(RenderCli, ProgressLineOnATerminalOnly) {
+  ScratchDir dir("render_progress");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  const std::string render = std::string("'") + VASCSIM_EXE + "' render '" + run + "'" + kSmall + "--png-dir '" +
+                             (dir / "png") + "' --force";
+  auto on_terminal = [&](const std::string& extra) {
+    return testing::run_program("script", "-qec \"" + render + extra + "\" /dev/null", dir);
+  };
+  const auto shown = on_terminal("");
+  ASSERT_EQ(shown.exit_code, 0) << shown.out << shown.err;
+  EXPECT_NE(shown.out.find("frames/s  ETA"), std::string::npos) << shown.out;
+  const auto quiet = on_terminal(" --quiet");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.out << quiet.err;
+  EXPECT_EQ(quiet.out.find("frames/s"), std::string::npos) << quiet.out;
+  const auto piped = run_vascsim("render '" + run + "'" + kSmall + "--png-dir '" + (dir / "png") + "' --force", dir);
+  ASSERT_EQ(piped.exit_code, 0);
+  EXPECT_EQ(piped.err.find("frames/s"), std::string::npos) << piped.err;
+}
+
+}  // namespace
+}  // namespace vascsim::render

@@ -1,6 +1,11 @@
 // vascsim render RUN_DIR: frame log to MP4 / PNG sequence / plots (render/render_run.h).
 // Built only with the renderer (VASCSIM_RENDER=ON); the file is globbed into the app either way.
 #ifdef VASCSIM_HAVE_RENDER
+#include <unistd.h>
+
+#include <chrono>
+#include <functional>
+#include <memory>
 #include <cstdio>
 
 #include "apps/vascsim/cli_args.h"
@@ -36,9 +41,29 @@ const std::vector<OptionSpec>& render_options() {
       {"contact-scale", "PX_PER_N", "contact force arrow length per newton (default: automatic)"},
       {"aa", "analytic|msaa", "anti-aliasing: analytic edges (default) or 4x multisampling"},
       {"force", "", "overwrite existing outputs"},
+      {"quiet", "", "no progress line (there is none unless stderr is a terminal)"},
       {"help", "", "show this help"},
   };
   return options;
+}
+
+// "frames done / all, frames per second, ETA" on a terminal, at most 10 times a second, after the
+// first second, as vascsim run shows its progress; nothing on a pipe or a log file.
+std::function<bool(std::size_t, std::size_t)> terminal_progress(bool enabled, bool& shown) {
+  if (!enabled || !::isatty(STDERR_FILENO)) return nullptr;
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  auto last = std::make_shared<double>(0.0);
+  return [start, last, &shown](std::size_t done, std::size_t all) {
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    if ((elapsed < 1.0 || elapsed - *last < 0.1) && done < all) return true;
+    *last = elapsed;
+    const double rate = elapsed > 0 ? done / elapsed : 0.0;
+    const double eta = rate > 0 ? (all - done) / rate : 0.0;
+    std::fprintf(stderr, "\r  frame %zu / %zu  %.1f frames/s  ETA %.1f s   ", done, all, rate, eta);
+    shown = true;
+    return true;
+  };
 }
 
 }  // namespace
@@ -86,7 +111,10 @@ int run_render_command(int argc, char** argv) {
   else throw UsageError("--aa: expected analytic or msaa, got '" + aa + "'");
   o.force = args.flag("force");
 
+  bool progress_shown = false;
+  o.progress = terminal_progress(!args.flag("quiet"), progress_shown);
   const render::RenderReport r = render::render_run(args.positional()[0], o);
+  if (progress_shown) std::fprintf(stderr, "\n");
   if (!r.note.empty()) std::fprintf(stderr, "vascsim render: %s\n", r.note.c_str());
   if (!r.video_path.empty())
     std::printf("wrote %s (%zu frames, %s, %d fps)\n", r.video_path.c_str(), r.frames, r.video_codec.c_str(), o.fps);
