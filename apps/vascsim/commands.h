@@ -26,6 +26,7 @@ int run_bench_command(int argc, char** argv);
 int run_bench_traversal(int argc, char** argv);
 int run_bench_speed(int argc, char** argv);
 int run_bench_accuracy(int argc, char** argv);
+int run_bench_sweep(int argc, char** argv);
 #ifdef VASCSIM_HAVE_RENDER
 int run_render_command(int argc, char** argv);
 int run_diff_command(int argc, char** argv);
