@@ -117,10 +117,10 @@ TEST(SweepCli, CtrlCStopsCleanlyAndAResumeGivesTheSameTable) {
   write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
                         R"(", "axes": {"/run/duration": [0.2, 20, 20, 20], "/control/kp": [4]}})");
   // kill signals the sweep alone (not its process group): the sweep must pass it on.
-  const CommandResult r = run_shell(std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + dir +
+  const CommandResult r = run_shell("{ " + std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + dir +
                                     "/out --jobs 2 & pid=$!; "
                                     "until [ -e " + dir + "/out/runs/0000/summary.json ]; do sleep 0.01; done; "
-                                    "kill -INT $pid; wait $pid; echo \"exit code $?\"");
+                                    "kill -INT $pid; wait $pid; echo \"exit code $?\"; }");
   ASSERT_TRUE(has(r.output, "exit code 130")) << r.output;
   EXPECT_TRUE(has(r.output, "interrupted")) << r.output;
   std::size_t completed = 0, stopped = 0;

@@ -61,8 +61,8 @@ std::vector<std::string> emit_gnu_parallel(const SweepDirectory& sweep, const Pa
                               (options.retry_failed ? " --retry-failed" : "");
   std::string line = "parallel";
   if (options.jobs > 0) line += " --jobs " + std::to_string(options.jobs);
-  line += " --joblog " + shell_quote((out / "joblog").string()) + " --resume";
-  if (options.retry_failed) line += "-failed";
+  // --resume skips the jobs the joblog lists; --resume-failed also re-runs the failed ones.
+  line += " --joblog " + shell_quote((out / "joblog").string()) + (options.retry_failed ? " --resume-failed" : " --resume");
   if (!options.sshloginfile.empty()) line += " --sshloginfile " + shell_quote(absolute_path(options.sshloginfile));
   line += " --arg-file " + shell_quote(jobs) + " " + shell_quote(command);
   const std::string text =
