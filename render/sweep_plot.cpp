@@ -39,7 +39,7 @@ void draw_panel(Canvas& c, const SweepFigure& f, const SweepPanel& p) {
   c.clear(kWhite);
   const float w = static_cast<float>(c.width()), h = static_cast<float>(c.height());
   Axes a;
-  a.left = 0.15f * w, a.right = w - 0.04f * w, a.top = 0.15f * h, a.bottom = h - 0.17f * h;
+  a.left = 0.15f * w, a.right = w - 0.04f * w, a.top = 0.12f * h, a.bottom = h - 0.2f * h;
   const double spacing = spacing_of(f.x);
   const auto [xlo, xhi] = std::minmax_element(f.x.begin(), f.x.end());
   a.xmin = *xlo - 0.5 * spacing, a.xmax = *xhi + 0.5 * spacing;
@@ -52,7 +52,7 @@ void draw_panel(Canvas& c, const SweepFigure& f, const SweepPanel& p) {
   lo = std::min(lo, 0.0);
   if (!(hi > lo)) hi = lo + 1;
   a.ymin = lo - (lo < 0 ? 0.05 * (hi - lo) : 0.0);
-  a.ymax = hi + 0.12 * (hi - lo);  // room for the failure counts
+  a.ymax = hi + 0.16 * (hi - lo);  // room for the counts of failed runs and runs without a value
   for (double y : nice_ticks(a.ymin, a.ymax, 6)) {
     const float py = a.map(a.xmin, y).y;
     c.box({a.left, py - 0.5f}, {a.right, py + 0.5f}, kGrid);
@@ -63,6 +63,7 @@ void draw_panel(Canvas& c, const SweepFigure& f, const SweepPanel& p) {
   }
   const int font = std::max(10, static_cast<int>(std::lround(h / 34.0)));
   std::vector<glm::vec2> means;
+  bool any_failed = false, any_unknown = false;
   for (std::size_t j = 0; j < f.x.size(); ++j) {
     const std::vector<double>& vs = j < p.values.size() ? p.values[j] : std::vector<double>();
     if (!vs.empty()) {
@@ -79,9 +80,18 @@ void draw_panel(Canvas& c, const SweepFigure& f, const SweepPanel& p) {
       means.push_back(a.map(f.x[j], sum / static_cast<double>(vs.size())));
     }
     const std::size_t failed = j < p.failed.size() ? p.failed[j] : 0;
-    if (failed > 0)
-      c.text(std::to_string(failed) + " failed", {a.map(f.x[j], a.ymax).x, a.top + 1.3f * font}, font, kFailed,
-             TextAlign::kCenter);
+    const std::size_t unknown = j < p.unknown.size() ? p.unknown[j] : 0;
+    // Counts only, so they fit however many values there are; the caption says what they count.
+    float y = a.top + 1.3f * font;
+    if (failed > 0) {
+      c.text(std::to_string(failed), {a.map(f.x[j], a.ymax).x, y}, font, kFailed, TextAlign::kCenter);
+      y += 1.2f * font;
+      any_failed = true;
+    }
+    if (unknown > 0) {
+      c.text(std::to_string(unknown), {a.map(f.x[j], a.ymax).x, y}, font, kRange, TextAlign::kCenter);
+      any_unknown = true;
+    }
   }
   if (means.size() > 1) c.polyline(means, 2.5f, kMean);
   for (const auto& m : means) c.disc(m, 5.0f, kMean);
@@ -91,8 +101,13 @@ void draw_panel(Canvas& c, const SweepFigure& f, const SweepPanel& p) {
   std::vector<std::pair<double, std::string>> ticks;
   for (std::size_t j = 0; j < f.x_labels.size() && j < f.x.size(); ++j) ticks.emplace_back(f.x[j], f.x_labels[j]);
   draw_frame(c, a, f.xlabel, p.ylabel, p.title, kWhite, ticks);
-  c.text("dots: runs   bar: min to max   line: mean", {a.right, a.top - 0.35f * font}, static_cast<int>(0.8 * font),
-         kRange, TextAlign::kRight);
+  std::string caption = "dots: runs   bar: min to max   line: mean";
+  if (any_unknown) caption += "   grey: runs " + (p.unknown_label.empty() ? std::string("without a value") : p.unknown_label);
+  const int small = static_cast<int>(0.8 * font);
+  // Under the x label, clear of the title however long it gets.
+  const float caption_y = a.bottom + 4.3f * font;
+  c.text(caption, {a.right, caption_y}, small, kRange, TextAlign::kRight);
+  if (any_failed) c.text("red: runs failed or missing", {a.left, caption_y}, small, kFailed, TextAlign::kLeft);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // The figure `vascsim sweep merge` draws for each axis of a sweep: up to four panels, each a
 // figure of the runs against the axis's values: every run as a dot (spread sideways a little,
 // so the spread over the other axes, e.g. over maze seeds, shows), the min-max range as a bar
-// and the mean as a line; runs that failed or are missing are counted above their value in red.
+// and the mean as a line; runs that failed or are missing are counted above their value in red,
+// completed runs without the figure (a goal not reached has no goal time) in grey.
 // Drawn with the plots' canvas, axes and frame (render/plots.h), so it reads like them.
 #pragma once
 
@@ -16,6 +17,8 @@ struct SweepPanel {
   std::string ylabel;                       // "tip error RMS (mm)"
   std::vector<std::vector<double>> values;  // per axis value: the completed runs' figures
   std::vector<std::size_t> failed;          // per axis value: runs failed or missing
+  std::vector<std::size_t> unknown;         // per axis value: completed runs without this figure
+  std::string unknown_label;                // what those are: "not reached" for a goal time
 };
 
 struct SweepFigure {

@@ -85,12 +85,15 @@ render::SweepFigure figure_of(const SweepManifest& m, const std::vector<RunOutco
     p.ylabel = std::string(all[i].label) + (*all[i].unit ? std::string(" (") + all[i].unit + ")" : "");
     p.values.resize(axis.values.size());
     p.failed.assign(axis.values.size(), 0);
+    p.unknown.assign(axis.values.size(), 0);
+    p.unknown_label = i == kGoalTime ? "not reached" : "without a value";
     for (std::size_t r = 0; r < m.runs.size(); ++r) {
       std::size_t j = 0;
       while (j < axis.values.size() && axis.values[j] != m.runs[r].values[k]) ++j;
       if (j == axis.values.size()) continue;
       if (outcomes[r].status != "done") ++p.failed[j];
       else if (std::isfinite(outcomes[r].metrics[i])) p.values[j].push_back(outcomes[r].metrics[i] * all[i].scale);
+      else ++p.unknown[j];
     }
     f.panels.push_back(std::move(p));
   }
