@@ -144,6 +144,20 @@ TEST(SweepCli, CtrlCStopsCleanlyAndAResumeGivesTheSameTable) {
             deterministic_columns(read_text(dir + "/whole/results.csv")));
 }
 
+TEST(SweepCli, ShowsProgressWithCountsAndAnEtaOnATerminalOnly) {
+  const std::string dir = fresh_temp_dir("sweep_progress");
+  const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);
+  // script (util-linux) gives the sweep a terminal.
+  const CommandResult tty = run_shell("script -qec '" + std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + dir +
+                                      "/tty --jobs 2 --no-merge' /dev/null");
+  ASSERT_EQ(tty.exit_code, 0) << tty.output;
+  EXPECT_TRUE(has(tty.output, "\r  sweep: 8/8 finished, 0 failed, 0 running, elapsed ")) << tty.output;
+  EXPECT_TRUE(has(tty.output, "ETA ")) << tty.output;
+  const CommandResult pipe = sweep_command(sweep + " --out " + dir + "/pipe --jobs 2 --no-merge");
+  ASSERT_EQ(pipe.exit_code, 0) << pipe.output;
+  EXPECT_FALSE(has(pipe.output, "ETA")) << pipe.output;
+}
+
 TEST(SweepCli, RunIndexAndShardSelectEntries) {
   const std::string dir = fresh_temp_dir("sweep_select");
   const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);

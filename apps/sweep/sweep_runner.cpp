@@ -116,7 +116,7 @@ RunnerReport run_sweep_entries(const SweepDirectory& sweep, const RunnerOptions&
     const double t = elapsed();
     std::string eta = "ETA --";
     if (finished > 0) eta = "ETA " + clock_text(t / static_cast<double>(finished) * static_cast<double>(to_run - finished));
-    std::fprintf(stderr, "\r  sweep: %zu/%zu done, %zu failed, %zu running, elapsed %s, %s%s   ", finished, to_run,
+    std::fprintf(stderr, "\r  sweep: %zu/%zu finished, %zu failed, %zu running, elapsed %s, %s%s   ", finished, to_run,
                  report.failed, running.size(), clock_text(t).c_str(), eta.c_str(),
                  g_stop_signal ? " (stopping)" : "");
     progress_shown = true;
