@@ -195,7 +195,7 @@ void draw_grid(Canvas& c, const Axes& a) {
 }
 
 void draw_frame(Canvas& c, const Axes& a, const std::string& xlabel, const std::string& ylabel,
-                const std::string& title, Rgba page) {
+                const std::string& title, Rgba page, const std::vector<std::pair<double, std::string>>& x_ticks) {
   // Data drawn so far is clipped to the axes by painting the margins over it.
   const float w = static_cast<float>(c.width()), h = static_cast<float>(c.height());
   c.fill_rect({0, 0}, {w, a.top}, page);
@@ -206,10 +206,13 @@ void draw_frame(Canvas& c, const Axes& a, const std::string& xlabel, const std::
   const int tick_font = std::max(9, static_cast<int>(std::lround(0.85 * font)));
   const auto xt = nice_ticks(a.xmin, a.xmax, 8), yt = nice_ticks(a.ymin, a.ymax, 6);
   const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1, ystep = yt.size() > 1 ? yt[1] - yt[0] : 1;
-  for (double x : xt) {
+  std::vector<std::pair<double, std::string>> x_labels = x_ticks;
+  if (x_labels.empty())
+    for (double x : xt) x_labels.emplace_back(x, format_tick(x, xstep));
+  for (const auto& [x, label] : x_labels) {
     const glm::vec2 p = a.map(x, a.ymin);
     c.box({p.x - 0.75f, a.bottom}, {p.x + 0.75f, a.bottom + 6}, kInk);
-    c.text(format_tick(x, xstep), {p.x, a.bottom + 8 + tick_font}, tick_font, kInk, TextAlign::kCenter);
+    c.text(label, {p.x, a.bottom + 8 + tick_font}, tick_font, kInk, TextAlign::kCenter);
   }
   for (double y : yt) {
     const glm::vec2 p = a.map(a.xmin, y);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -26,9 +27,11 @@ struct Axes {
 // Grid lines, drawn first, under the data.
 void draw_grid(Canvas& canvas, const Axes& axes);
 // Drawn after the data: paints the margins in `page` (clipping the data to the axes), then the
-// frame, ticks with labels, axis labels and the title.
+// frame, ticks with labels, axis labels and the title. `x_ticks`, when given, replaces the
+// x axis's numeric ticks by these positions and labels (names of categories, uneven values).
 void draw_frame(Canvas& canvas, const Axes& axes, const std::string& xlabel, const std::string& ylabel,
-                const std::string& title, Rgba page);
+                const std::string& title, Rgba page,
+                const std::vector<std::pair<double, std::string>>& x_ticks = {});
 
 // Writes the plots into `dir` and returns their paths. Refuses to overwrite an existing plot
 // unless `force`. Throws InputError on failure.

@@ -29,6 +29,8 @@ CommandResult run_vascsim_via(const std::string& command_line) {
 
 }  // namespace
 
+CommandResult run_shell(const std::string& command_line) { return run_vascsim_via(command_line); }
+
 CommandResult run_vascsim(const std::string& arguments) {
   return run_vascsim_via(std::string(VASCSIM_EXE) + " " + arguments);
 }

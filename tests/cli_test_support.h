@@ -13,6 +13,8 @@ struct CommandResult {
 
 // Runs `VASCSIM_EXE <arguments>` through the shell (arguments are passed verbatim).
 CommandResult run_vascsim(const std::string& arguments);
+// Runs a shell command line (stdout and stderr captured together).
+CommandResult run_shell(const std::string& command_line);
 // As run_vascsim, but the process is killed (SIGKILL) after `seconds` if still running.
 CommandResult run_vascsim_killed_after(const std::string& arguments, double seconds);
 // A fresh, empty temporary directory unique to this test process and `name`.

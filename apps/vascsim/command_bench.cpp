@@ -20,6 +20,7 @@ const std::vector<Benchmark>& benchmarks() {
       {"speed", "rod core: time per Newton iteration and per step, N = 10 .. 100000", run_bench_speed},
       {"accuracy", "rod core: error against wall time over dt, N, tolerance and scheme (CSV)", run_bench_accuracy},
       {"traversal", "full maze traversal: wall time and real-time factor per preset", run_bench_traversal},
+      {"sweep", "sweep overhead per run (expand, process start, merge) on 100 tiny runs; --jobs 2 utilisation", run_bench_sweep},
 #ifdef VASCSIM_HAVE_RENDER
       {"render", "renderer frames/s at 720p and 1080p, MP4 and PNG", run_bench_render},
       {"replay", "replay server: frame latency from a client, open time and memory on a 10^6-frame log", run_bench_replay},

@@ -13,15 +13,21 @@ struct Command {
 };
 
 const std::vector<Command>& commands();
+// What main does: --version, --help, or the subcommand argv[1], its errors printed and turned
+// into exit codes (2 for usage and input errors, 3 for internal ones). The sweep runs
+// `vascsim run` through it in forked children.
+int run_command_line(int argc, char** argv);
 
 int run_maze_command(int argc, char** argv);
 int run_vessels_command(int argc, char** argv);
 int run_export_command(int argc, char** argv);
 int run_run_command(int argc, char** argv);
+int run_sweep_command(int argc, char** argv);
 int run_bench_command(int argc, char** argv);
 int run_bench_traversal(int argc, char** argv);
 int run_bench_speed(int argc, char** argv);
 int run_bench_accuracy(int argc, char** argv);
+int run_bench_sweep(int argc, char** argv);
 #ifdef VASCSIM_HAVE_RENDER
 int run_render_command(int argc, char** argv);
 int run_diff_command(int argc, char** argv);

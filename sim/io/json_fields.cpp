@@ -33,6 +33,13 @@ std::string describe(const json& value) {
   return s;
 }
 
+std::string escape_pointer_token(const std::string& key) {
+  if (key.find_first_of("~/") == std::string::npos) return key;
+  std::string out;
+  for (char c : key) out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+  return out;
+}
+
 namespace {
 
 // Where the parser is, for the messages of parse_json_strictly: one entry per open object or
@@ -47,7 +54,7 @@ struct OpenContainer {
 std::string pointer_of_stack(const std::vector<OpenContainer>& stack) {
   std::string p;
   for (std::size_t i = 0; i + 1 < stack.size(); ++i)
-    p += "/" + (stack[i].is_array ? std::to_string(stack[i].index) : stack[i].key);
+    p += "/" + (stack[i].is_array ? std::to_string(stack[i].index) : escape_pointer_token(stack[i].key));
   return p.empty() ? "/" : p;
 }
 

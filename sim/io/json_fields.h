@@ -14,6 +14,10 @@
 
 namespace vascsim::io {
 
+// A key as one reference token of a JSON pointer (RFC 6901): '~' is written "~0" and '/' "~1",
+// so the key "/control/kp" of a sweep's axes is the token "~1control~1kp".
+std::string escape_pointer_token(const std::string& key);
+
 class FieldReader {
  public:
   // `object` must outlive the reader. Throws InputError if it is not a JSON object.
@@ -36,6 +40,7 @@ class FieldReader {
   // Throws for the first key not read by any accessor above.
   void finish() const;
 
+  // `key` may be a path below this object ("pinned/0"): it is not escaped.
   std::string pointer_of(const std::string& key) const { return pointer_ + "/" + key; }
   [[noreturn]] void fail(const std::string& key, const std::string& expected, const nlohmann::json& got) const;
   const std::string& file() const { return file_; }

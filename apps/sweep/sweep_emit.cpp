@@ -1,0 +1,147 @@
+#include "apps/sweep/sweep_emit.h"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "apps/sweep/run_process.h"
+#include "sim/io/output_file.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim::sweep {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string absolute_path(const std::string& path) { return fs::absolute(path).lexically_normal().string(); }
+
+void check_new(const std::vector<std::string>& paths, bool force) {
+  for (const auto& p : paths) check_replaceable_output(p, force, {});
+}
+
+void write_script(const std::string& path, const std::string& text, bool executable) {
+  write_file_atomically(path, text);
+  if (executable) ::chmod(path.c_str(), 0755);
+}
+
+// Slurm expands '%' in --output patterns and #SBATCH lines end at white space: such paths
+// would silently log elsewhere, so they are refused.
+void check_slurm_path(const std::string& path) {
+  if (path.find_first_of("% \t\n\"'\\") != std::string::npos)
+    throw InputError(path + ": a path with spaces, quotes or '%' cannot be named in #SBATCH lines; "
+                     "move the sweep directory or the vascsim executable");
+}
+
+}  // namespace
+
+std::string shell_quote(const std::string& text) {
+  if (!text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./=:,+@%") ==
+                           std::string::npos)
+    return text;
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::vector<std::string> emit_gnu_parallel(const SweepDirectory& sweep, const ParallelOptions& options, bool force) {
+  const std::string dir = absolute_path(sweep.dir), exe = vascsim_executable();
+  const fs::path out = fs::path(dir) / "parallel";
+  const std::string jobs = (out / "jobs.txt").string(), script = (out / "run.sh").string();
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw InputError(out.string() + ": cannot create directory (" + ec.message() + ")");
+  check_new({jobs, script}, force);
+  std::string list;
+  for (const auto& r : sweep.manifest.runs) list += std::to_string(r.index) + "\n";
+  // parallel joins its command words and gives them to a shell: the command is one argument,
+  // quoted once for run.sh's shell and once inside for parallel's.
+  const std::string command = shell_quote(exe) + " sweep " + shell_quote(dir) + " --run-index {}" +
+                              (options.retry_failed ? " --retry-failed" : "");
+  std::string line = "parallel";
+  if (options.jobs > 0) line += " --jobs " + std::to_string(options.jobs);
+  // --resume skips the jobs the joblog lists; --resume-failed also re-runs the failed ones.
+  line += " --joblog " + shell_quote((out / "joblog").string()) + (options.retry_failed ? " --resume-failed" : " --resume");
+  if (!options.sshloginfile.empty()) line += " --sshloginfile " + shell_quote(absolute_path(options.sshloginfile));
+  line += " --arg-file " + shell_quote(jobs) + " " + shell_quote(command);
+  const std::string text =
+      "#!/bin/sh\n"
+      "# Runs every entry of the sweep '" + sweep.manifest.name + "' (" + std::to_string(sweep.manifest.runs.size()) +
+      " runs) with GNU parallel.\n"
+      "# Written by vascsim sweep --emit gnu-parallel. Running it again resumes: parallel skips the\n"
+      "# jobs its joblog lists (--resume), vascsim skips runs whose summary says they completed.\n"
+      "# Then: " + shell_quote(exe) + " sweep merge " + shell_quote(dir) + "\n"
+      "exec " + line + "\n";
+  write_file_atomically(jobs, list);
+  write_script(script, text, true);
+  return {script, jobs};
+}
+
+std::vector<std::string> emit_slurm(const SweepDirectory& sweep, const SlurmOptions& options, bool force) {
+  const std::string dir = absolute_path(sweep.dir), exe = vascsim_executable();
+  check_slurm_path(dir);
+  check_slurm_path(exe);
+  const fs::path out = fs::path(dir) / "slurm";
+  const std::string array = (out / "array.sbatch").string(), merge = (out / "merge.sbatch").string(),
+                    submit = (out / "submit.sh").string(), logs = (out / "logs").string();
+  std::error_code ec;
+  fs::create_directories(logs, ec);
+  if (ec) throw InputError(logs + ": cannot create directory (" + ec.message() + ")");
+  check_new({submit, array, merge}, force);
+
+  const std::size_t n = sweep.manifest.runs.size();
+  const std::size_t chunk = static_cast<std::size_t>(std::max(1, options.chunk));
+  const std::string throttle = options.max_parallel > 0 ? "%" + std::to_string(options.max_parallel) : "";
+  std::string common;
+  if (!options.partition.empty()) common += "#SBATCH --partition=" + options.partition + "\n";
+  const std::string job = "vascsim-" + sweep.manifest.name;
+
+  std::string a = "#!/bin/bash\n"
+                  "# One task of the Slurm job array of the sweep '" + sweep.manifest.name + "': entry\n"
+                  "# SLURM_ARRAY_TASK_ID (plus VASCSIM_SWEEP_OFFSET when the sweep is split into arrays of at\n"
+                  "# most " + std::to_string(chunk) + ") of " + dir + "/manifest.json. Its own output goes to\n"
+                  "# runs/<id>/run.log. Written by vascsim sweep --emit slurm; submit with submit.sh.\n"
+                  "#SBATCH --job-name=" + job + "\n"
+                  "#SBATCH --array=0-" + std::to_string(std::min(n, chunk) - 1) + throttle + "\n"
+                  "#SBATCH --ntasks=1\n"
+                  "#SBATCH --cpus-per-task=" + std::to_string(options.cpus_per_task) + "\n"
+                  "#SBATCH --output=" + logs + "/run_%A_%a.out\n" + common +
+                  (options.time_limit.empty() ? "" : "#SBATCH --time=" + options.time_limit + "\n") +
+                  "index=$((SLURM_ARRAY_TASK_ID + ${VASCSIM_SWEEP_OFFSET:-0}))\n"
+                  "exec " + shell_quote(exe) + " sweep " + shell_quote(dir) + " --run-index \"$index\"" +
+                  (options.retry_failed ? " --retry-failed" : "") + "\n";
+  std::string m = "#!/bin/bash\n"
+                  "# Merges the sweep '" + sweep.manifest.name + "' once its array tasks have ended (submit.sh adds\n"
+                  "# the dependency): results.csv, results.json and plots/ in " + dir + ".\n"
+                  "#SBATCH --job-name=" + job + "-merge\n"
+                  "#SBATCH --ntasks=1\n"
+                  "#SBATCH --output=" + logs + "/merge_%j.out\n" + common +
+                  "exec " + shell_quote(exe) + " sweep merge " + shell_quote(dir) + " --force\n";
+  std::string s = "#!/bin/bash\n"
+                  "# Submits the sweep '" + sweep.manifest.name + "' (" + std::to_string(n) + " runs) to Slurm: the job array, then\n"
+                  "# the merge, which waits for every array task to end (afterany: a failed run is a row of the\n"
+                  "# table too). Submitting again re-runs only what has not completed. Prints the job ids.\n"
+                  "set -euo pipefail\n"
+                  "ids=()\n";
+  if (n <= chunk) {
+    s += "ids+=(\"$(sbatch --parsable " + shell_quote(array) + " | cut -d';' -f1)\")\n";
+  } else {
+    for (std::size_t first = 0; first < n; first += chunk) {
+      const std::size_t count = std::min(chunk, n - first);
+      s += "ids+=(\"$(sbatch --parsable --array=0-" + std::to_string(count - 1) + throttle +
+           " --export=ALL,VASCSIM_SWEEP_OFFSET=" + std::to_string(first) + " " + shell_quote(array) + " | cut -d';' -f1)\")\n";
+    }
+  }
+  s += "dependency=afterany$(printf ':%s' \"${ids[@]}\")\n"
+       "merge=$(sbatch --parsable --dependency=\"$dependency\" " + shell_quote(merge) + " | cut -d';' -f1)\n"
+       "echo \"array jobs: ${ids[*]}\"\n"
+       "echo \"merge job: $merge\"\n"
+       "echo \"results: " + dir + "/results.csv when job $merge has ended (squeue -j $merge)\"\n";
+  write_script(array, a, false);
+  write_script(merge, m, false);
+  write_script(submit, s, true);
+  return {submit, array, merge};
+}
+
+}  // namespace vascsim::sweep

@@ -1,0 +1,195 @@
+#include "sim/io/sweep_spec.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "sim/io/json_fields.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim {
+
+using nlohmann::json;
+
+namespace {
+
+// Range values are rounded to 12 significant digits, so 0.1 + 2 * 0.1 is written 0.3 and not
+// 0.30000000000000004 in scenes, manifests and tables.
+double round12(double x) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.12g", x);
+  return std::strtod(text, nullptr);
+}
+
+// A pointer's syntax: empty (the whole scene) is refused, and every token must start with '/'
+// and use only the escapes ~0 and ~1.
+void check_pointer(const std::string& pointer, const std::string& label, const std::string& where) {
+  bool ok = !pointer.empty() && pointer[0] == '/';
+  for (std::size_t i = 0; ok && i < pointer.size(); ++i)
+    if (pointer[i] == '~') ok = i + 1 < pointer.size() && (pointer[i + 1] == '0' || pointer[i + 1] == '1');
+  if (!ok)
+    throw InputError(label + ": " + where + ": expected a JSON pointer into the scene such as \"/control/kp\", got " +
+                     json(pointer).dump());
+}
+
+// {"from": a, "to": b[, "step": s | "count": n[, "scale": "linear" | "log"]]} as values.
+std::vector<std::string> read_range(const json& range, const std::string& label, const std::string& where) {
+  io::FieldReader in(range, label, where);
+  for (const char* key : {"from", "to"})
+    if (!in.has(key))
+      throw InputError(label + ": " + in.pointer_of(key) + ": missing (a range needs \"from\" and \"to\", numbers)");
+  const double from = in.number("from", 0, -1e300, 1e300);
+  const double to = in.number("to", 0, -1e300, 1e300);
+  if (to < from) in.fail("to", "a number >= \"from\" (" + io::format_number(from) + ")", range["to"]);
+  if (in.has("step") && in.has("count")) in.fail("count", "either \"step\" or \"count\", not both", range["count"]);
+  const std::string scale = in.choice("scale", "linear", {"linear", "log"});
+  if (scale == "log" && in.has("step")) in.fail("step", "\"count\" with \"scale\": \"log\"", range["step"]);
+  if (scale == "log" && !(from > 0)) in.fail("from", "a number > 0 with \"scale\": \"log\"", range["from"]);
+  const long long max_count = static_cast<long long>(kMaxSweepRuns);
+  std::vector<std::string> values;
+  if (in.has("count")) {
+    const long long count = in.integer("count", 2, 1, max_count);
+    if (count == 1 && to != from) in.fail("count", "an integer >= 2 when \"to\" differs from \"from\"", range["count"]);
+    for (long long i = 0; i < count; ++i) {
+      const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
+      const double x = scale == "log" ? from * std::pow(to / from, f) : from + f * (to - from);
+      values.push_back(json(round12(i == count - 1 ? to : x)).dump());
+    }
+    in.finish();
+    return values;
+  }
+  // Integer bounds and step give integers (seeds, node counts); 2^53 keeps them exact as doubles.
+  const auto exact_integer = [&](const char* key) {
+    return range[key].is_number_integer() && std::fabs(range[key].get<double>()) <= 9007199254740992.0;
+  };
+  const bool integers = exact_integer("from") && exact_integer("to") && (!in.has("step") || exact_integer("step"));
+  const double step = in.positive("step", 1.0);
+  // A step that does not divide the span stops at the last value <= "to" (the tolerance keeps
+  // 0.1 .. 0.3 step 0.1 at three values despite rounding).
+  const double span = (to - from) / step;
+  if (!(span < static_cast<double>(max_count)))
+    in.fail(in.has("step") ? "step" : "to", "at most " + std::to_string(max_count) + " values in the range",
+            in.has("step") ? range["step"] : range["to"]);
+  const long long count = static_cast<long long>(std::floor(span + 1e-9)) + 1;
+  for (long long i = 0; i < count; ++i) {
+    if (integers)
+      values.push_back(json(range["from"].get<long long>() + i * range.value("step", json(1)).get<long long>()).dump());
+    else
+      values.push_back(json(round12(from + static_cast<double>(i) * step)).dump());
+  }
+  in.finish();
+  return values;
+}
+
+// An axis's values: a non-empty list of JSON values, or a range object.
+std::vector<std::string> read_values(const json& v, const std::string& label, const std::string& where) {
+  if (v.is_object()) return read_range(v, label, where);
+  if (!v.is_array() || v.empty())
+    throw InputError(label + ": " + where +
+                     ": expected a non-empty list of values or a range {\"from\": a, \"to\": b}, got " + io::describe(v));
+  if (v.size() > kMaxSweepRuns)
+    throw InputError(label + ": " + where + ": more than " + std::to_string(kMaxSweepRuns) + " values");
+  std::vector<std::string> values;
+  for (const auto& item : v) values.push_back(item.dump());
+  return values;
+}
+
+// The keys of a JSON object in the order the file writes them (nlohmann::json sorts them; the
+// order of the axes is the user's: the first varies slowest, columns appear in that order).
+std::vector<std::string> keys_in_file_order(const std::string& text, const std::string& key) {
+  const nlohmann::ordered_json root = nlohmann::ordered_json::parse(text);
+  std::vector<std::string> keys;
+  for (auto it = root[key].begin(); it != root[key].end(); ++it) keys.push_back(it.key());
+  return keys;
+}
+
+}  // namespace
+
+SweepSpec read_sweep_text(const std::string& text, const std::string& label) {
+  const json root = io::parse_json_strictly(text, label);
+  io::FieldReader in(root, label, "");
+  SweepSpec spec;
+  spec.file = label;
+  if (!in.has("format")) throw InputError(label + ": /format: missing (expected \"vascsim-sweep/1\")");
+  if (in.text("format", "") != "vascsim-sweep/1") in.fail("format", "\"vascsim-sweep/1\"", root["format"]);
+  spec.name = in.text("name", std::filesystem::path(label).stem().string());
+  if (spec.name.empty() || spec.name.size() > 64 || spec.name.find_first_of("/\\\n\r\t\"'$`") != std::string::npos)
+    in.fail("name", "a name of 1 to 64 characters without slashes, quotes or '$'", root["name"]);
+  in.text("description", "");
+  spec.scene = in.text("scene", "");
+  if (spec.scene.empty()) {
+    if (!in.has("scene")) throw InputError(label + ": /scene: missing (the base scene file, relative to the sweep file)");
+    in.fail("scene", "the base scene file, relative to the sweep file", root["scene"]);
+  }
+  const std::filesystem::path scene(spec.scene);
+  spec.scene_path = scene.is_absolute() ? spec.scene : (std::filesystem::path(label).parent_path() / scene).string();
+
+  spec.combine = in.choice("combine", "product", {"product", "zip"}) == "zip" ? SweepCombine::kZip : SweepCombine::kProduct;
+  spec.repeats = static_cast<int>(in.integer("repeats", 1, 1, 10000));
+
+  const json* axes = in.raw("axes");
+  if (!axes || !axes->is_object() || axes->empty())
+    in.fail("axes", "an object of JSON pointers into the scene, each with its values: {\"/control/kp\": [2, 4, 8]}",
+            axes ? *axes : json(nullptr));
+  for (const std::string& key : keys_in_file_order(text, "axes")) {
+    const std::string where = "/axes/" + io::escape_pointer_token(key);
+    check_pointer(key, label, where);
+    spec.axes.push_back({key, read_values((*axes)[key], label, where)});
+  }
+  if (const json* fixed = in.raw("overrides")) {
+    if (!fixed->is_object()) in.fail("overrides", "an object of JSON pointers into the scene and their values", *fixed);
+    for (const std::string& key : keys_in_file_order(text, "overrides")) {
+      const std::string where = "/overrides/" + io::escape_pointer_token(key);
+      check_pointer(key, label, where);
+      for (const auto& axis : spec.axes)
+        if (axis.pointer == key)
+          throw InputError(label + ": " + where + ": " + key + " is also an axis; an override is fixed for every run");
+      spec.overrides.emplace_back(key, (*fixed)[key].dump());
+    }
+  }
+  in.finish();
+
+  // The size is checked here, before anything is expanded.
+  if (spec.combine == SweepCombine::kZip)
+    for (const auto& axis : spec.axes)
+      if (axis.values.size() != spec.axes.front().values.size())
+        throw InputError(label + ": /axes/" + io::escape_pointer_token(axis.pointer) + ": expected " +
+                         std::to_string(spec.axes.front().values.size()) + " values (as many as " +
+                         spec.axes.front().pointer + ", with \"combine\": \"zip\"), got " +
+                         std::to_string(axis.values.size()));
+  double runs = spec.repeats;
+  if (spec.combine == SweepCombine::kZip) runs *= static_cast<double>(spec.axes.front().values.size());
+  else
+    for (const auto& axis : spec.axes) runs *= static_cast<double>(axis.values.size());
+  if (runs > static_cast<double>(kMaxSweepRuns))
+    throw InputError(label + ": /axes: the sweep has " + io::format_number(runs) + " runs, more than the limit of " +
+                     std::to_string(kMaxSweepRuns));
+  return spec;
+}
+
+SweepSpec read_sweep_file(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(path + ": not a regular file (a sweep is read from a JSON file)");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InputError(path + ": cannot open sweep file");
+  std::string text(kMaxSweepFileBytes + 1, '\0');
+  file.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (file.bad()) throw InputError(path + ": cannot read sweep file");
+  text.resize(static_cast<std::size_t>(file.gcount()));
+  if (text.size() > kMaxSweepFileBytes)
+    throw InputError(path + ": larger than " + std::to_string(kMaxSweepFileBytes >> 20) + " MB, the limit for a sweep file");
+  return read_sweep_text(text, path);
+}
+
+std::size_t sweep_run_count(const SweepSpec& spec) {
+  std::size_t n = static_cast<std::size_t>(spec.repeats);
+  if (spec.combine == SweepCombine::kZip) return n * spec.axes.front().values.size();
+  for (const auto& axis : spec.axes) n *= axis.values.size();
+  return n;
+}
+
+}  // namespace vascsim

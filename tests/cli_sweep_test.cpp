@@ -1,0 +1,279 @@
+// vascsim sweep on the local engine, through the command line: the sweep directory, resume,
+// failed runs and --retry-failed, Ctrl-C, --run-index and --shard, the merged table and its
+// determinism, the files for GNU parallel and Slurm, and bad input (exit code 2, the file and
+// JSON path named, nothing written). Runs are the default maze for 0.3 s: a few ms each.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "tests/cli_test_support.h"
+#include "tests/sweep_test_support.h"
+
+namespace vascsim::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kAxes = R"({"/control/kp": [2, 4], "/maze/seed": {"from": 1, "to": 4}})";
+
+bool has(const std::string& text, const std::string& needle) { return text.find(needle) != std::string::npos; }
+
+CommandResult sweep_command(const std::string& arguments) { return run_vascsim("sweep " + arguments); }
+
+TEST(SweepCli, RunsEveryEntryInItsOwnDirectoryAndMerges) {
+  const std::string dir = fresh_temp_dir("sweep_local");
+  const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);
+  const CommandResult r = sweep_command(sweep + " --out " + dir + "/out --jobs 2 | cat");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "ran 8 of 8 runs")) << r.output;
+  EXPECT_TRUE(has(r.output, "utilisation")) << r.output;
+  for (const char* f : {"manifest.json", "sweep.json", "results.csv", "results.json"}) EXPECT_TRUE(fs::exists(dir + "/out/" + f)) << f;
+#ifdef VASCSIM_HAVE_RENDER
+  for (const char* f : {"plots/control_kp.png", "plots/maze_seed.png"}) EXPECT_TRUE(fs::exists(dir + "/out/" + f)) << f;
+#else
+  EXPECT_TRUE(has(r.output, "no plots: this build has no renderer")) << r.output;
+#endif
+  for (const char* id : {"0000", "0007"})
+    for (const char* f : {"scene.json", "frames.vlog", "summary.json", "status.json", "run.log"})
+      EXPECT_TRUE(fs::exists(dir + "/out/runs/" + id + "/" + f)) << id << "/" << f;
+  const std::string csv = read_text(dir + "/out/results.csv");
+  EXPECT_EQ(parse_csv(csv).size(), 9u);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "index,id,repeat,/control/kp,/maze/seed,status,goal_reached,goal_time_s,tip_error_rms_m,tip_error_max_m,"
+            "actuation_force_max_N,contact_force_max_N,max_penetration_m,steps,newton_iterations,rejected_steps,failure,"
+            "wall_time_s,real_time_factor,process_time_s,cpu_time_s,host");
+  EXPECT_EQ(csv_cell(csv, 5, "/control/kp"), "4");
+  EXPECT_EQ(csv_cell(csv, 5, "/maze/seed"), "2");
+  for (std::size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(csv_cell(csv, i, "status"), "done") << i;
+    EXPECT_EQ(csv_cell(csv, i, "steps"), "300") << i;
+  }
+  // The gain matters: kp = 4 tracks closer than kp = 2 (the figures are the runs' own).
+  EXPECT_LT(std::stod(csv_cell(csv, 4, "tip_error_rms_m")), std::stod(csv_cell(csv, 0, "tip_error_rms_m")));
+  const std::string summary = read_text(dir + "/out/runs/0004/summary.json");
+  EXPECT_TRUE(has(summary, "\"tip_error_rms\": " + csv_cell(csv, 4, "tip_error_rms_m"))) << summary.substr(0, 2000);
+  // The summary table: one line per axis value.
+  EXPECT_TRUE(has(r.output, "sweep kp (")) << r.output;
+  EXPECT_TRUE(has(r.output, "8 runs: 8 done, 0 failed, 0 missing")) << r.output;
+
+  // The same sweep again, elsewhere: the same table but for the timing columns, byte for byte.
+  const CommandResult again = sweep_command(sweep + " --out " + dir + "/again --jobs 1 --quiet");
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(deterministic_columns(read_text(dir + "/again/results.csv")), deterministic_columns(csv));
+  EXPECT_NE(read_text(dir + "/again/results.csv"), csv) << "the timing columns should differ (they are measured)";
+}
+
+TEST(SweepCli, ResumesSkippingCompletedRunsAndRerunsOnlyWhatIsMissing) {
+  const std::string dir = fresh_temp_dir("sweep_resume");
+  const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);
+  ASSERT_EQ(sweep_command(sweep + " --out " + dir + "/out --no-merge --quiet").exit_code, 0);
+  const std::string log = read_text(dir + "/out/runs/0002/summary.json");
+  // A run that was killed leaves no summary: it is missing, and resume runs it (only it).
+  fs::remove(dir + "/out/runs/0005/summary.json");
+  fs::remove(dir + "/out/runs/0005/status.json");
+  const CommandResult r = sweep_command(sweep + " --out " + dir + "/out");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "(resuming)")) << r.output;
+  EXPECT_TRUE(has(r.output, "ran 1 of 8 runs (7 completed before")) << r.output;
+  EXPECT_EQ(read_text(dir + "/out/runs/0002/summary.json"), log) << "a completed run must not be run again";
+  EXPECT_TRUE(fs::exists(dir + "/out/runs/0005/summary.json"));
+  // The directory alone resumes too (what an engine or a user without the sweep file does).
+  const CommandResult d = sweep_command(dir + "/out --quiet");
+  EXPECT_EQ(d.exit_code, 0) << d.output;
+  EXPECT_TRUE(has(d.output, "results.csv is from an earlier merge")) << d.output;
+}
+
+TEST(SweepCli, AFailedRunIsARowAndIsRetriedOnlyWhenAsked) {
+  const std::string dir = fresh_temp_dir("sweep_failed");
+  // A rod 120 mm across in a 100 mm lumen: `vascsim run` refuses it (exit 2) before simulating.
+  const std::string sweep =
+      write_maze_sweep(dir, "radius", R"({"/rod/outer_radius": [0.002, 0.06]})", 0.3, R"(, "name": "radius")");
+  const CommandResult r = sweep_command(sweep + " --out " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_TRUE(has(r.output, "run 0001 (/rod/outer_radius = 0.06) failed: vascsim run exited with code 2: vascsim run: "
+                            "runs/0001/scene.json: /maze/lumen_width: the lumen (100 mm) must be wider than the rod"))
+      << r.output;
+  const std::string csv = read_text(dir + "/out/results.csv");
+  EXPECT_EQ(csv_cell(csv, 0, "status"), "done");
+  EXPECT_EQ(csv_cell(csv, 1, "status"), "failed");
+  EXPECT_TRUE(has(csv_cell(csv, 1, "failure"), "must be wider than the rod")) << csv;
+  EXPECT_EQ(csv_cell(csv, 1, "tip_error_rms_m"), "");
+  EXPECT_TRUE(has(r.output, "2 runs: 1 done, 1 failed, 0 missing")) << r.output;
+
+  const CommandResult skip = sweep_command(sweep + " --out " + dir + "/out --no-merge");
+  EXPECT_EQ(skip.exit_code, 1) << skip.output;
+  EXPECT_TRUE(has(skip.output, "ran 0 of 2 runs (1 completed before, 1 failed before)")) << skip.output;
+  const CommandResult retry = sweep_command(sweep + " --out " + dir + "/out --no-merge --retry-failed");
+  EXPECT_EQ(retry.exit_code, 1) << retry.output;
+  EXPECT_TRUE(has(retry.output, "ran 1 of 2 runs")) << retry.output;
+}
+
+TEST(SweepCli, CtrlCStopsCleanlyAndAResumeGivesTheSameTable) {
+  const std::string dir = fresh_temp_dir("sweep_interrupt");
+  // One short run, then long ones: the signal is sent when the short one has completed, so
+  // some are completed and some running when it lands, however fast the machine.
+  const std::string sweep = dir + "/durations.json";
+  write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
+                        R"(", "axes": {"/run/duration": [0.2, 20, 20, 20], "/control/kp": [4]}})");
+  // kill signals the sweep alone (not its process group): the sweep must pass it on.
+  const CommandResult r = run_shell("{ " + std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + dir +
+                                    "/out --jobs 2 & pid=$!; "
+                                    "until [ -e " + dir + "/out/runs/0000/summary.json ]; do sleep 0.01; done; "
+                                    "kill -INT $pid; wait $pid; echo \"exit code $?\"; }");
+  ASSERT_TRUE(has(r.output, "exit code 130")) << r.output;
+  EXPECT_TRUE(has(r.output, "interrupted")) << r.output;
+  std::size_t completed = 0, stopped = 0;
+  for (int i = 0; i < 4; ++i) {
+    const std::string run = dir + "/out/runs/000" + std::to_string(i);
+    const bool summary = fs::exists(run + "/summary.json"), status = fs::exists(run + "/status.json");
+    EXPECT_EQ(summary, status) << run << ": a completed run has both, an interrupted one neither";
+    completed += summary;
+    stopped += !summary && fs::exists(run + "/frames.vlog");
+  }
+  EXPECT_GE(completed, 1u) << r.output;
+  EXPECT_LT(completed, 4u) << r.output;
+  EXPECT_GE(stopped, 1u) << "no run was interrupted mid-way: " << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/out/results.csv")) << "an interrupted sweep does not merge";
+
+  const CommandResult resumed = sweep_command(sweep + " --out " + dir + "/out --jobs 2");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_TRUE(has(resumed.output, "ran " + std::to_string(4 - completed) + " of 4 runs")) << resumed.output;
+  ASSERT_EQ(sweep_command(sweep + " --out " + dir + "/whole --jobs 2 --quiet").exit_code, 0);
+  EXPECT_EQ(deterministic_columns(read_text(dir + "/out/results.csv")),
+            deterministic_columns(read_text(dir + "/whole/results.csv")));
+}
+
+TEST(SweepCli, ShowsProgressWithCountsAndAnEtaOnATerminalOnly) {
+  const std::string dir = fresh_temp_dir("sweep_progress");
+  const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);
+  // script (util-linux) gives the sweep a terminal.
+  const CommandResult tty = run_shell("script -qec '" + std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + dir +
+                                      "/tty --jobs 2 --no-merge' /dev/null");
+  ASSERT_EQ(tty.exit_code, 0) << tty.output;
+  EXPECT_TRUE(has(tty.output, "\r  sweep: 8/8 finished, 0 failed, 0 running, elapsed ")) << tty.output;
+  EXPECT_TRUE(has(tty.output, "ETA ")) << tty.output;
+  const CommandResult pipe = sweep_command(sweep + " --out " + dir + "/pipe --jobs 2 --no-merge");
+  ASSERT_EQ(pipe.exit_code, 0) << pipe.output;
+  EXPECT_FALSE(has(pipe.output, "ETA")) << pipe.output;
+}
+
+TEST(SweepCli, RunIndexAndShardSelectEntries) {
+  const std::string dir = fresh_temp_dir("sweep_select");
+  const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);
+  ASSERT_EQ(sweep_command(sweep + " --out " + dir + "/out --emit gnu-parallel").exit_code, 0);  // makes DIR, runs nothing
+  EXPECT_FALSE(fs::exists(dir + "/out/runs/0000/summary.json"));
+  const CommandResult one = sweep_command(dir + "/out --run-index 6");
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  EXPECT_TRUE(has(one.output, "run 0006: done")) << one.output;
+  EXPECT_TRUE(fs::exists(dir + "/out/runs/0006/summary.json"));
+  EXPECT_FALSE(fs::exists(dir + "/out/runs/0005/summary.json"));
+  const CommandResult twice = sweep_command(dir + "/out --run-index 6");
+  EXPECT_EQ(twice.exit_code, 0) << twice.output;
+  EXPECT_TRUE(has(twice.output, "run 0006: completed before; skipped")) << twice.output;
+  const CommandResult beyond = sweep_command(dir + "/out --run-index 8");
+  EXPECT_EQ(beyond.exit_code, 2) << beyond.output;
+  EXPECT_TRUE(has(beyond.output, "--run-index: expected an integer in [0, 7], got '8'")) << beyond.output;
+
+  const CommandResult shard = sweep_command(dir + "/out --shard 1/3 --no-merge");
+  ASSERT_EQ(shard.exit_code, 0) << shard.output;
+  EXPECT_TRUE(has(shard.output, "ran 3 of 3 runs (0 completed before")) << shard.output;  // 1, 4, 7
+  for (int i = 0; i < 8; ++i)
+    EXPECT_EQ(fs::exists(dir + "/out/runs/000" + std::to_string(i) + "/summary.json"), i % 3 == 1 || i == 6) << i;
+  EXPECT_EQ(sweep_command(dir + "/out --shard 3/3").exit_code, 2);
+
+  // Merging now: the runs not yet made are rows that say so.
+  const CommandResult merge = sweep_command("merge " + dir + "/out --no-plots");
+  ASSERT_EQ(merge.exit_code, 0) << merge.output;
+  EXPECT_TRUE(has(merge.output, "8 runs: 4 done, 0 failed, 4 missing")) << merge.output;
+  const std::string csv = read_text(dir + "/out/results.csv");
+  EXPECT_EQ(csv_cell(csv, 0, "status"), "missing");
+  EXPECT_EQ(csv_cell(csv, 1, "status"), "done");
+  EXPECT_EQ(parse_csv(csv).size(), 9u);
+  const CommandResult refused = sweep_command("merge " + dir + "/out --no-plots");
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_TRUE(has(refused.output, "results.csv: already exists (pass --force")) << refused.output;
+  EXPECT_EQ(sweep_command("merge " + dir + "/out --no-plots --force").exit_code, 0);
+}
+
+TEST(SweepCli, EmitsGnuParallelAndSlurmFiles) {
+  const std::string dir = fresh_temp_dir("sweep_emit");
+  const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);
+  const std::string out = dir + "/out";
+  const CommandResult p = sweep_command(sweep + " --out " + out + " --emit gnu-parallel --jobs 2 --sshloginfile " + dir + "/hosts");
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  EXPECT_EQ(read_text(out + "/parallel/jobs.txt"), "0\n1\n2\n3\n4\n5\n6\n7\n");
+  const std::string script = read_text(out + "/parallel/run.sh");
+  EXPECT_TRUE(has(script, "exec parallel --jobs 2 --joblog " + out + "/parallel/joblog --resume --sshloginfile " + dir +
+                              "/hosts --arg-file " + out + "/parallel/jobs.txt '" + std::string(VASCSIM_EXE) + " sweep " + out +
+                              " --run-index {}'"))
+      << script;
+  EXPECT_EQ(sweep_command(out + " --emit gnu-parallel").exit_code, 2) << "emitted files are not replaced without --force";
+  EXPECT_EQ(sweep_command(out + " --emit gnu-parallel --force").exit_code, 0);
+
+  const CommandResult s = sweep_command(out + " --emit slurm --max-parallel 2 --partition debug --time 0:10:00");
+  ASSERT_EQ(s.exit_code, 0) << s.output;
+  const std::string array = read_text(out + "/slurm/array.sbatch");
+  EXPECT_TRUE(has(array, "#SBATCH --array=0-7%2\n")) << array;
+  EXPECT_TRUE(has(array, "#SBATCH --output=" + out + "/slurm/logs/run_%A_%a.out\n")) << array;
+  EXPECT_TRUE(has(array, "#SBATCH --partition=debug\n#SBATCH --time=0:10:00\n")) << array;
+  EXPECT_TRUE(has(array, "exec " + std::string(VASCSIM_EXE) + " sweep " + out + " --run-index \"$index\"")) << array;
+  EXPECT_TRUE(has(read_text(out + "/slurm/merge.sbatch"), "sweep merge " + out + " --force")) << read_text(out + "/slurm/merge.sbatch");
+  const std::string submit = read_text(out + "/slurm/submit.sh");
+  EXPECT_TRUE(has(submit, "--dependency=\"$dependency\"")) << submit;
+  EXPECT_TRUE(has(submit, "dependency=afterany")) << submit;
+}
+
+TEST(SweepCli, SlurmArraysLongerThanAChunkAreSplitWithOffsets) {
+  const std::string dir = fresh_temp_dir("sweep_chunks");
+  const std::string sweep = write_maze_sweep(dir, "seeds", R"({"/maze/seed": {"from": 1, "to": 2500}})", 0.3);
+  const CommandResult s = sweep_command(sweep + " --out " + dir + "/out --emit slurm --max-parallel 50");
+  ASSERT_EQ(s.exit_code, 0) << s.output;
+  const std::string submit = read_text(dir + "/out/slurm/submit.sh");
+  EXPECT_TRUE(has(submit, "--array=0-999%50 --export=ALL,VASCSIM_SWEEP_OFFSET=0 ")) << submit;
+  EXPECT_TRUE(has(submit, "--array=0-999%50 --export=ALL,VASCSIM_SWEEP_OFFSET=1000 ")) << submit;
+  EXPECT_TRUE(has(submit, "--array=0-499%50 --export=ALL,VASCSIM_SWEEP_OFFSET=2000 ")) << submit;
+  EXPECT_TRUE(fs::exists(dir + "/out/runs/2499/scene.json"));
+}
+
+TEST(SweepCli, BadInputIsRefusedBeforeAnythingIsWritten) {
+  const std::string dir = fresh_temp_dir("sweep_bad");
+  const std::string sweep = write_maze_sweep(dir, "bad", R"({"/control/kp": [2, 4], "/maze/sede": [1, 2]})", 0.3);
+  const CommandResult r = sweep_command(sweep + " --out " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(has(r.output, sweep + ": /axes/~1maze~1sede: the scene " + source_path("scenes/maze_default.json") +
+                                " has no field /maze/sede (fields of /maze: "))
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+
+  const std::string value = write_maze_sweep(dir, "value", R"({"/maze/rows": [5, 0]})", 0.3);
+  const CommandResult v = sweep_command(value + " --out " + dir + "/out");
+  EXPECT_EQ(v.exit_code, 2) << v.output;
+  EXPECT_TRUE(has(v.output, value + ": run 0001 (/maze/rows = 0): ")) << v.output;
+  EXPECT_TRUE(has(v.output, "/maze/rows: expected an integer in [1, 200], got 0")) << v.output;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+
+  // Somebody's folder is never used; another sweep's needs --force.
+  fs::create_directories(dir + "/mine");
+  write_text(dir + "/mine/notes.txt", "mine");
+  const CommandResult mine = sweep_command(write_maze_sweep(dir, "good", R"({"/control/kp": [2]})", 0.3) + " --out " + dir + "/mine");
+  EXPECT_EQ(mine.exit_code, 2) << mine.output;
+  EXPECT_TRUE(has(mine.output, "is not empty and holds no sweep")) << mine.output;
+  EXPECT_EQ(read_text(dir + "/mine/notes.txt"), "mine");
+  ASSERT_EQ(sweep_command(dir + "/good.json --out " + dir + "/s --quiet").exit_code, 0);
+  const std::string other = write_maze_sweep(dir, "other", R"({"/control/kp": [3]})", 0.3);
+  const CommandResult differs = sweep_command(other + " --out " + dir + "/s");
+  EXPECT_EQ(differs.exit_code, 2) << differs.output;
+  EXPECT_TRUE(has(differs.output, "holds a different sweep")) << differs.output;
+  EXPECT_TRUE(fs::exists(dir + "/s/runs/0000/summary.json"));
+  EXPECT_EQ(sweep_command(other + " --out " + dir + "/s --force --quiet").exit_code, 0);
+  EXPECT_TRUE(has(read_text(dir + "/s/manifest.json"), "\"/control/kp\":3"));
+
+  EXPECT_EQ(sweep_command(dir + "/nothing.json --out " + dir + "/x").exit_code, 2);
+  EXPECT_EQ(sweep_command(dir + "/s --shard 1").exit_code, 2);
+  EXPECT_EQ(sweep_command(dir + "/s --emit condor").exit_code, 2);
+  EXPECT_EQ(sweep_command("merge " + dir + "/mine").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace vascsim::test
