@@ -29,11 +29,8 @@ const std::vector<Command>& commands() {
       {"maze", "generate and solve a maze; write walls and path as JSON", run_maze_command},
       {"vessels", "build and route a vessel network; write lumen, walls and path as JSON", run_vessels_command},
       {"run", "simulate a scene; stream the frame log and write summary.json", run_run_command},
-<<<<<<< HEAD
-      {"export", "write a run's frame log as CSV files (MATLAB, Excel, R)", run_export_command},
-=======
       {"sweep", "run a parameter sweep locally, with GNU parallel or Slurm; merge its results", run_sweep_command},
->>>>>>> sweep
+      {"export", "write a run's frame log as CSV files (MATLAB, Excel, R)", run_export_command},
       {"bench", "measure speed and accuracy (vascsim bench --help)", run_bench_command},
 #ifdef VASCSIM_HAVE_RENDER
       {"render", "render a run's frame log to MP4, PNG frames and plots", run_render_command},
