@@ -168,7 +168,13 @@ void VideoEncoder::finish() {
   m.encode(nullptr);
   const int rc = av_write_trailer(m.format);
   if (rc < 0) throw InputError(m.final_path + ": cannot finish video (" + av_error(rc) + ")");
-  avio_closep(&m.format->pb);
+  // The last buffered bytes reach the file only now: a write error here (a full disk) must stop
+  // the rename, or a truncated video would stand under the final name.
+  avio_flush(m.format->pb);
+  const int write_error = m.format->pb->error;
+  const int closed = avio_closep(&m.format->pb);
+  if (write_error < 0 || closed < 0)
+    throw InputError(m.final_path + ": cannot finish video (" + av_error(write_error < 0 ? write_error : closed) + ")");
   std::error_code ec;
   std::filesystem::rename(m.temp_path, m.final_path, ec);
   if (ec) throw InputError(m.final_path + ": cannot rename the finished video (" + ec.message() + ")");
