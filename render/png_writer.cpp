@@ -26,6 +26,7 @@ static unsigned char* vascsim_zlib_compress(unsigned char* data, int length, int
 #define STBI_WRITE_NO_STDIO
 #include <stb_image_write.h>
 
+#include "sim/io/output_file.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -62,20 +63,8 @@ std::vector<std::uint8_t> encode_png(const std::uint8_t* rgba, int width, int he
 
 void write_png(const std::string& path, const std::uint8_t* rgba, int width, int height) {
   const std::vector<std::uint8_t> bytes = encode_png(rgba, width, height);
-  const std::string temp = path + ".partial";
-  std::FILE* f = std::fopen(temp.c_str(), "wb");
-  if (!f) throw InputError(path + ": cannot create PNG (" + std::strerror(errno) + ")");
-  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  if (std::fclose(f) != 0 || !ok) {
-    std::remove(temp.c_str());
-    throw InputError(path + ": cannot write PNG (disk full?)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) {
-    std::remove(temp.c_str());
-    throw InputError(path + ": cannot rename PNG (" + ec.message() + ")");
-  }
+  // A temporary name of this process's own, then a rename (sim/io/output_file.h).
+  write_file_atomically(path, std::string(bytes.begin(), bytes.end()));
 }
 
 std::string png_frame_path(const std::string& dir, std::size_t index) {

@@ -13,7 +13,8 @@ namespace vascsim::render {
 
 // PNG bytes of a top-down RGBA image (alpha dropped). Deterministic.
 std::vector<std::uint8_t> encode_png(const std::uint8_t* rgba, int width, int height);
-// Writes the PNG to `path` + ".partial", then renames. Throws InputError on failure.
+// Writes the PNG under a temporary name of this process's own, then renames it to `path`
+// (write_file_atomically, sim/io/output_file.h). Throws InputError naming `path` on failure.
 void write_png(const std::string& path, const std::uint8_t* rgba, int width, int height);
 // "DIR/frame_000042.png".
 std::string png_frame_path(const std::string& dir, std::size_t index);

@@ -14,6 +14,7 @@
 #include "render/tip_trail.h"
 #include "render/video_encoder.h"
 #include "render/view_frame.h"
+#include "sim/io/output_file.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -44,6 +45,7 @@ namespace {
 RenderReport render_still(const FrameSource& source, const RenderOptions& o) {
   std::error_code ec;
   if (fs::exists(o.png_path, ec) && !o.force) throw InputError(o.png_path + ": exists (use --force to overwrite)");
+  remove_stale_temporaries(fs::path(o.png_path).parent_path().string());
   std::unique_ptr<FrameSource> overlay;
   if (!o.overlay_run.empty()) overlay = std::make_unique<FrameSource>(o.overlay_run);
   ViewFrameInputs in;
@@ -117,15 +119,19 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   std::error_code ec;
   if (!o.mp4_path.empty() && fs::exists(o.mp4_path, ec) && !o.force)
     throw InputError(o.mp4_path + ": exists (use --force to overwrite)");
+  // What a killed render left here under temporary names goes first (sim/io/output_file.h).
+  if (!o.mp4_path.empty()) remove_stale_temporaries(fs::path(o.mp4_path).parent_path().string());
   if (!o.png_dir.empty()) {
     if (has_png_frames(o.png_dir) && !o.force)
       throw InputError(o.png_dir + ": already holds frame_*.png files (use --force to overwrite)");
     prepare_directory(o.png_dir, "PNG");
     remove_png_frames(o.png_dir);
+    remove_stale_temporaries(o.png_dir);
   }
   RenderReport report;
   if (!o.plots_dir.empty()) {
     prepare_directory(o.plots_dir, "plots");
+    remove_stale_temporaries(o.plots_dir);
     report.plots = write_plots(source, o.plots_dir, o.force);
   }
   if (o.mp4_path.empty() && o.png_dir.empty()) return report;

@@ -14,6 +14,7 @@ extern "C" {
 }
 
 #include "render/av_error.h"
+#include "sim/io/output_file.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -58,7 +59,7 @@ struct VideoEncoder::Impl {
       av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
       rc = av_interleaved_write_frame(format, packet);
-      if (rc < 0) throw InputError(temp_path + ": cannot write video (" + av_error(rc) + ")");
+      if (rc < 0) throw InputError(final_path + ": cannot write video (" + av_error(rc) + ")");
     }
   }
 };
@@ -79,7 +80,9 @@ VideoEncoder::VideoEncoder(const std::string& path, const VideoSettings& setting
     m.note = "H.264 (libx264) is not available in this libavcodec; wrote VP9 in WebM instead: " + m.final_path;
   }
   m.codec_name = encoder == nullptr ? "" : (std::string(container) == "mp4" ? "h264" : "vp9");
-  m.temp_path = m.final_path + ".partial";
+  // Hidden and unique to this process; a render killed before its rename leaves it for the next
+  // render into this directory to remove (sim/io/output_file.h).
+  m.temp_path = temporary_sibling(m.final_path);
 
   if (avformat_alloc_output_context2(&m.format, nullptr, container, m.temp_path.c_str()) < 0 || !m.format)
     throw std::runtime_error(std::string("libavformat has no ") + container + " muxer");
@@ -125,13 +128,13 @@ VideoEncoder::VideoEncoder(const std::string& path, const VideoSettings& setting
   m.stream->avg_frame_rate = c->framerate;
 
   rc = avio_open(&m.format->pb, m.temp_path.c_str(), AVIO_FLAG_WRITE);
-  if (rc < 0) throw InputError(m.temp_path + ": cannot create video file (" + av_error(rc) + ")");
+  if (rc < 0) throw InputError(m.final_path + ": cannot create video file (" + av_error(rc) + ")");
   AVDictionary* options = nullptr;
   // faststart: the muxer moves the index (moov) before the media data when it finishes.
   if (m.codec_name == "h264") av_dict_set(&options, "movflags", "+faststart", 0);
   rc = avformat_write_header(m.format, &options);
   av_dict_free(&options);
-  if (rc < 0) throw InputError(m.temp_path + ": cannot write video header (" + av_error(rc) + ")");
+  if (rc < 0) throw InputError(m.final_path + ": cannot write video header (" + av_error(rc) + ")");
 
   m.frame->format = c->pix_fmt;
   m.frame->width = c->width;
@@ -164,8 +167,14 @@ void VideoEncoder::finish() {
   Impl& m = *impl_;
   m.encode(nullptr);
   const int rc = av_write_trailer(m.format);
-  if (rc < 0) throw InputError(m.temp_path + ": cannot finish video (" + av_error(rc) + ")");
-  avio_closep(&m.format->pb);
+  if (rc < 0) throw InputError(m.final_path + ": cannot finish video (" + av_error(rc) + ")");
+  // The last buffered bytes reach the file only now: a write error here (a full disk) must stop
+  // the rename, or a truncated video would stand under the final name.
+  avio_flush(m.format->pb);
+  const int write_error = m.format->pb->error;
+  const int closed = avio_closep(&m.format->pb);
+  if (write_error < 0 || closed < 0)
+    throw InputError(m.final_path + ": cannot finish video (" + av_error(write_error < 0 ? write_error : closed) + ")");
   std::error_code ec;
   std::filesystem::rename(m.temp_path, m.final_path, ec);
   if (ec) throw InputError(m.final_path + ": cannot rename the finished video (" + ec.message() + ")");

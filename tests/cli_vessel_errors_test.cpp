@@ -44,6 +44,12 @@ const BadVessels kBad[] = {
      "/vessels: the lumen on the route narrows to 3 mm across at (0.25, 0) m, not wider than the rod (4 mm across, /rod/outer_radius)"},
     {"maze_and_vessels", R"({"maze": {}, "vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j"}})",
      "/maze: expected no \"maze\" beside \"vessels\" (a scene has one environment), got an object"},
+    // Found by the scene fuzz harness: a far point overflowed the lumen's integer geometry
+    // (Clipper), an internal error with no file named.
+    {"node_far_away", R"({"vessels": {"nodes": {"a": [0, 0], "j": [1e19, 0]}, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j"}})",
+     "/vessels/nodes/j: expected a point [x, y] (m) with |x|, |y| <= 1000, got "},
+    {"via_far_away", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "via": [[0.2, -9.2e18]])") R"(], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/via: expected points [x, y] (m) with |x|, |y| <= 1000, got "},
     {"unknown_key", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "radius_end": 0.04)") R"(], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/radius_end: unknown key"},
 };

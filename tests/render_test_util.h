@@ -3,12 +3,14 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -46,6 +48,13 @@ inline std::string make_run(const ScratchDir& dir, const SyntheticLogSpec& spec,
   return run;
 }
 
+inline std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 struct CommandResult {
   int exit_code = -1;
   std::string out, err;
@@ -72,11 +81,32 @@ inline CommandResult run_program(const std::string& program, const std::string& 
 // Runs `vascsim ARGS`.
 inline CommandResult run_vascsim(const std::string& args, const ScratchDir& dir) { return run_program(VASCSIM_EXE, args, dir); }
 
-inline std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+// Runs `vascsim ARGS` and kills it with SIGKILL, as a user's kill -9 would, the first time
+// `ready()` holds (polled every 2 ms: a file appeared, n frames were written). exit_code is
+// 128 + 9 if it was killed, its own if it ended first.
+inline CommandResult run_vascsim_killed_when(const std::string& args, const ScratchDir& dir,
+                                             const std::function<bool()>& ready) {
+  const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd = "exec '" + std::string(VASCSIM_EXE) + "' " + args + " >'" + out + "' 2>'" + err + "'";
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, WNOHANG) != pid) {
+    if (ready()) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+      break;
+    }
+    ::usleep(2000);
+  }
+  CommandResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = read_bytes(out);
+  r.err = read_bytes(err);
+  return r;
 }
 
 // Compares `png` with tests/golden/NAME. With VASCSIM_UPDATE_GOLDENS=1 in the environment it

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "sim/io/output_file.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::replay {
@@ -21,7 +22,8 @@ std::string ExportJobs::reserve_name(const std::string& out_dir) {
     std::snprintf(name, sizeof name, "export-%03d.mp4", n);
     const std::string path = (fs::path(out_dir) / name).string();
     std::error_code ec;
-    if (reserved_.count(path) || fs::exists(path, ec) || fs::exists(path + ".partial", ec)) continue;
+    // Not a name another server on this run is still writing (its temporary name is in use).
+    if (reserved_.count(path) || fs::exists(path, ec) || temporary_in_use(path)) continue;
     reserved_.insert(path);
     return path;
   }

@@ -189,6 +189,8 @@ int run_run_command(int argc, char** argv) {
     throw InputError(*out + ": cannot create directory (" + ec.message() + ")");
   }
 
+  remove_stale_temporaries(*out);  // a killed earlier run's summary.json under its temporary name
+
   FrameLogHeader header;
   header.node_count = static_cast<std::uint32_t>(scene.rod.nodes);
   header.channels = run.channels();

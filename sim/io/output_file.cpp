@@ -1,5 +1,6 @@
 #include "sim/io/output_file.h"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -34,9 +35,64 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
   check_output_path(path, overwrite, option_hint);
 }
 
+namespace {
+
+// This machine's name, as temporary names carry it (the pid follows the last '-', so a host
+// name with '-' in it parses too).
+const std::string& host_name() {
+  static const std::string name = [] {
+    char buffer[256] = {};
+    if (::gethostname(buffer, sizeof buffer - 1) != 0 || !buffer[0]) return std::string("localhost");
+    return std::string(buffer);
+  }();
+  return name;
+}
+
+// The pid of a temporary name of `name`'s form ".<output>.tmp-<host>-<pid>" written on this
+// host, or 0 if `name` is not one.
+pid_t temporary_owner(const std::string& name) {
+  const std::string marker = ".tmp-" + host_name() + "-";
+  const std::size_t at = name.rfind(marker);
+  if (name.size() < 2 || name[0] != '.' || at == std::string::npos || at == 0) return 0;
+  const std::string digits = name.substr(at + marker.size());
+  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return 0;
+  return static_cast<pid_t>(std::stol(digits));
+}
+
+bool process_runs(pid_t pid) { return ::kill(pid, 0) == 0 || errno == EPERM; }
+
+}  // namespace
+
 std::string temporary_sibling(const std::string& path) {
   const fs::path p(path);
-  return (p.parent_path() / ("." + p.filename().string() + ".tmp-" + std::to_string(::getpid()))).string();
+  return (p.parent_path() / ("." + p.filename().string() + ".tmp-" + host_name() + "-" + std::to_string(::getpid())))
+      .string();
+}
+
+std::size_t remove_stale_temporaries(const std::string& dir) {
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (fs::directory_iterator it(dir.empty() ? "." : dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const pid_t owner = temporary_owner(it->path().filename().string());
+    if (owner > 0 && owner != ::getpid() && !process_runs(owner) && it->is_regular_file(ec)) stale.push_back(it->path());
+  }
+  std::size_t removed = 0;
+  for (const auto& p : stale) removed += fs::remove(p, ec);
+  return removed;
+}
+
+bool temporary_in_use(const std::string& path) {
+  const fs::path p(path);
+  const std::string prefix = "." + p.filename().string() + ".tmp-";
+  std::error_code ec;
+  const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const pid_t owner = temporary_owner(name);
+    if (owner > 0 && process_runs(owner)) return true;
+  }
+  return false;
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {

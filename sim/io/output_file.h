@@ -2,6 +2,7 @@
 // stands under its final name (write to a temporary sibling, then rename, which is atomic on POSIX).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,20 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
 // Writes `content` to a temporary file beside `path`, then renames it over `path`.
 // Throws InputError (naming the path and the system's reason) on failure, leaving nothing behind.
 void write_file_atomically(const std::string& path, const std::string& content);
-// A temporary sibling name for `path` ("<dir>/.<name>.tmp-<pid>"); rename it into place when complete.
+
+// Temporary names. Every output (a video, each PNG, a summary) is written under a hidden name of
+// its own, unique to the writing process, and renamed into place when complete:
+//   <dir>/.<name>.tmp-<host>-<pid>
+// Unique, so two processes writing the same output never write into one file (the last complete
+// rename wins); hidden, so a process killed with SIGKILL (which no program can clean up after)
+// leaves no file that looks like an output. What such a process left is removed by the next
+// vascsim that writes into the same directory (remove_stale_temporaries): a temporary name is
+// stale when its host is this machine and its pid no longer runs.
 std::string temporary_sibling(const std::string& path);
+// Removes the stale temporary files directly in `dir` (see above); returns how many. Files of
+// other hosts (a shared file system) and of running processes are left alone. Never throws.
+std::size_t remove_stale_temporaries(const std::string& dir);
+// Whether a running process on this machine is writing `path` under a temporary name.
+bool temporary_in_use(const std::string& path);
 
 }  // namespace vascsim

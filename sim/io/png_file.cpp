@@ -68,18 +68,23 @@ std::string decode_failure(const std::string& path) {
 }  // namespace
 
 PngPixels read_png(const std::string& path, int channels, int max_side) {
-  const std::string bytes = read_png_bytes(path);
-  check_png_container(bytes, path);
+  return decode_png(read_png_bytes(path), path, channels, max_side);
+}
+
+PngPixels decode_png(const std::string& bytes, const std::string& label, int channels, int max_side) {
+  if (bytes.size() > kMaxPngBytes)
+    throw InputError(label + ": cannot read PNG (larger than " + std::to_string(kMaxPngBytes >> 20) + " MB)");
+  check_png_container(bytes, label);
   const auto* raw = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = static_cast<int>(bytes.size());  // <= kMaxPngBytes, fits an int
   int w = 0, h = 0, comp = 0;
   // The header's size first: a small file can claim a huge image, and decoding allocates it.
-  if (!stbi_info_from_memory(raw, size, &w, &h, &comp)) throw InputError(decode_failure(path));
+  if (!stbi_info_from_memory(raw, size, &w, &h, &comp)) throw InputError(decode_failure(label));
   if (max_side > 0 && (w > max_side || h > max_side))
-    throw InputError(path + ": the image is " + std::to_string(w) + " x " + std::to_string(h) +
+    throw InputError(label + ": the image is " + std::to_string(w) + " x " + std::to_string(h) +
                      " px, larger than " + std::to_string(max_side) + " px a side");
   unsigned char* data = stbi_load_from_memory(raw, size, &w, &h, &comp, channels);
-  if (!data) throw InputError(decode_failure(path));
+  if (!data) throw InputError(decode_failure(label));
   PngPixels img;
   img.width = w;
   img.height = h;

@@ -28,6 +28,9 @@ struct PngPixels {
 // InputError naming the file if it is missing, not a regular file, over kMaxPngBytes, not a
 // well-formed PNG (signature, CRCs, final IEND), too large or not decodable.
 PngPixels read_png(const std::string& path, int channels, int max_side = 0);
+// read_png's checks and decoding of a file's bytes already in memory (`label` names them in
+// errors); read_png is this after reading the file. The fuzz harness (tests/fuzz) calls it.
+PngPixels decode_png(const std::string& bytes, const std::string& label, int channels, int max_side = 0);
 
 // An 8-bit grey image: 0 black .. 255 white.
 struct GreyImage {

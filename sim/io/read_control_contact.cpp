@@ -1,4 +1,5 @@
 #include <cmath>
+#include <limits>
 
 #include "sim/io/scene_sections.h"
 
@@ -46,7 +47,11 @@ void read_control(FieldReader& in, ControlSpec& out) {
   out.disturbance.omega = d.number("omega", out.disturbance.omega, 0.0, 1e6);
   const Vec2 direction = d.vec2("direction", out.disturbance.direction);
   if (direction.norm() < 1e-12) d.fail("direction", "a non-zero vector [x, y]", to_json(direction));
-  out.disturbance.direction = direction.normalized();
+  // Normalised, but a vector already of unit length (to rounding) is kept as written: dividing
+  // it by its norm can move its last bit, and the canonical text a log stores must read back
+  // to itself.
+  out.disturbance.direction =
+      std::abs(direction.norm() - 1.0) <= 4 * std::numeric_limits<double>::epsilon() ? direction : direction.normalized();
   d.finish();
   in.finish();
 }

@@ -1,4 +1,5 @@
 // The `vessels` section: a centreline graph or an image mask (docs/environment.md).
+#include <cmath>
 #include <filesystem>
 
 #include "sim/io/scene_sections.h"
@@ -38,6 +39,14 @@ std::vector<Item> read_list(FieldReader& in, const std::string& key, const char*
   return out;
 }
 
+// Vessel geometry lies within 1000 m of the origin on each axis, as radii and lengths are at
+// most 1000 m: the lumen is built on a 0.1 um integer grid (sim/env/vessel_lumen.cpp), which a
+// point far beyond that would overflow.
+constexpr double kMaxCoordinate = 1e3;  // m
+constexpr const char* kPointWithinBounds = "a point [x, y] (m) with |x|, |y| <= 1000";
+constexpr const char* kPointsWithinBounds = "points [x, y] (m) with |x|, |y| <= 1000";
+bool within_bounds(const Vec2& p) { return std::abs(p.x()) <= kMaxCoordinate && std::abs(p.y()) <= kMaxCoordinate; }
+
 VesselSegmentSpec read_segment(FieldReader& in) {
   VesselSegmentSpec s;
   s.from = in.text("from", "");
@@ -54,6 +63,7 @@ VesselSegmentSpec read_segment(FieldReader& in) {
         in.fail("via", "an array of [x, y] points (m)", p);
       s.via.emplace_back(p[0].get<double>(), p[1].get<double>());
       if (!s.via.back().allFinite()) in.fail("via", "finite points", p);
+      if (!within_bounds(s.via.back())) in.fail("via", kPointsWithinBounds, p);
     }
   }
   s.stenoses = read_list<StenosisSpec>(in, "stenoses", "an array of {\"at\", \"length\", \"fraction\"}", [](FieldReader& f) {
@@ -109,6 +119,8 @@ void read_vessels(FieldReader& in, VesselsSpec& out) {
     if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
       FieldReader(*nodes, in.file(), in.pointer_of("nodes")).fail(name, "a point [x, y] (m)", p);
     out.nodes.push_back({name, Vec2(p[0].get<double>(), p[1].get<double>())});
+    if (!within_bounds(out.nodes.back().position))
+      FieldReader(*nodes, in.file(), in.pointer_of("nodes")).fail(name, kPointWithinBounds, p);
   }
   out.segments = read_list<VesselSegmentSpec>(in, "segments", "an array of {\"from\", \"to\", \"radius\"} segments", read_segment);
   if (out.segments.empty()) in.fail("segments", "at least one segment", in.has("segments") ? *in.raw("segments") : json());

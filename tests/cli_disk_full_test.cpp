@@ -1,0 +1,44 @@
+// `vascsim run` onto a full disk (a small tmpfs, as root; tests/tmpfs_support.h): it stops with
+// exit 2 and a message naming the log and the system's reason, the log keeps every frame it
+// completed and renders to the last of them, and nothing partial stands under a final name.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "sim/log/frame_log.h"
+#include "tests/cli_test_support.h"
+#include "tests/tmpfs_support.h"
+
+namespace vascsim::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(DiskFull, RunStopsWithExit2AndKeepsEveryCompletedFrame) {
+  SmallTmpfs disk("run", 96 * 1024);
+  ASSERT_TRUE(disk.ok()) << disk.error();
+  const std::string dir = fresh_temp_dir("disk_full_run");
+  // About 2 kB a frame for 5000 frames: the 96 kB disk fills after a few dozen.
+  write_text(dir + "/scene.json",
+             R"({"maze": null, "rod": {"nodes": 20}, "run": {"duration": 5, "output_interval": 0.001}})");
+  const std::string out = disk.path() + "/run";
+  const CommandResult r = run_vascsim("run " + dir + "/scene.json --out " + out + " --quiet");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(out + "/frames.vlog: cannot write"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+
+  // Every complete frame is there, in order; a torn last record is not counted.
+  FrameLogReader log(out + "/frames.vlog");
+  const std::size_t n = log.frame_count();
+  ASSERT_GE(n, 5u);
+  EXPECT_LT(n, 5001u);
+  EXPECT_DOUBLE_EQ(log.time_of(n - 1), 0.001 * static_cast<double>(n - 1));
+  // No summary claims a result, and no temporary file is left behind.
+  for (const auto& e : fs::directory_iterator(out))
+    EXPECT_EQ(e.path().filename(), "frames.vlog") << "unexpected " << e.path();
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace vascsim::test

@@ -1,0 +1,73 @@
+// Temporary output names (sim/io/output_file.h): hidden, unique to the process, and removed by
+// the next writer into the directory once their process is gone, so a `kill -9` leaves nothing
+// that looks like an output and nothing that blocks the next one.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "sim/io/output_file.h"
+#include "tests/cli_test_support.h"
+
+namespace vascsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The pid of a process that has exited and been reaped: no process runs under it.
+pid_t dead_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+// `path`'s temporary name as process `pid` on this host would have it.
+std::string temporary_of(const std::string& path, pid_t pid) {
+  const std::string mine = temporary_sibling(path), own = std::to_string(::getpid());
+  return mine.substr(0, mine.size() - own.size()) + std::to_string(pid);
+}
+
+void touch(const std::string& path) { std::ofstream(path) << "partial"; }
+
+TEST(OutputFile, TemporaryNameIsHiddenBesideTheOutputAndNamesHostAndPid) {
+  const std::string t = temporary_sibling("/some/dir/out.mp4");
+  EXPECT_EQ(t.rfind("/some/dir/.out.mp4.tmp-", 0), 0u) << t;
+  EXPECT_EQ(t.substr(t.rfind('-') + 1), std::to_string(::getpid())) << t;
+}
+
+TEST(OutputFile, StaleTemporariesOfDeadProcessesAreRemovedOthersKept) {
+  const std::string dir = test::fresh_temp_dir("stale_temporaries");
+  const std::string out = dir + "/out.mp4";
+  const std::string stale = temporary_of(out, dead_pid());
+  const std::string stale_frame = temporary_of(dir + "/frame_000003.png", dead_pid());
+  const std::string running = temporary_of(out, ::getppid());  // the test's parent runs
+  const std::string other_host = dir + "/.out.mp4.tmp-another-host-" + std::to_string(dead_pid());
+  const std::string lookalike = dir + "/out.mp4.tmp-1";  // not hidden: not ours
+  for (const auto& p : {stale, stale_frame, running, other_host, lookalike, out}) touch(p);
+  EXPECT_TRUE(temporary_in_use(out));  // `running`
+  EXPECT_EQ(remove_stale_temporaries(dir), 2u);
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_FALSE(fs::exists(stale_frame));
+  for (const auto& p : {running, other_host, lookalike, out}) EXPECT_TRUE(fs::exists(p)) << p;
+  fs::remove(running);
+  EXPECT_FALSE(temporary_in_use(out)) << "only another host's leftover remains";
+  EXPECT_EQ(remove_stale_temporaries(dir + "/no_such_dir"), 0u);
+  fs::remove_all(dir);
+}
+
+TEST(OutputFile, WriteFileAtomicallyLeavesOnlyTheFinalName) {
+  const std::string dir = test::fresh_temp_dir("atomic_write");
+  write_file_atomically(dir + "/a.json", "{}");
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(dir)) entries += e.path().filename() == "a.json" ? 1 : 100;
+  EXPECT_EQ(entries, 1u);
+  EXPECT_EQ(test::read_text(dir + "/a.json"), "{}");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace vascsim
