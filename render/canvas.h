@@ -81,6 +81,8 @@ class Canvas {
             TextAlign align = TextAlign::kLeft, float angle = 0);
   float text_width(const std::string& utf8, int pixel_height);
 
+  // Shapes queued since the last finish() (tests check that drawing stays bounded).
+  std::size_t queued_shapes() const { return shapes_.size(); }
   // Draws everything queued since the last finish() and reads the picture back as top-down
   // RGBA8 rows (width*height*4 bytes). The queue starts empty again.
   void finish(std::uint8_t* rgba);
