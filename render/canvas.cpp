@@ -265,6 +265,10 @@ void Canvas::fill_rect(glm::vec2 min, glm::vec2 max, Rgba colour) {
 }
 
 void Canvas::push_shape(const Shape& s) {
+  if (shapes_.size() >= kMaxShapes) {
+    ++dropped_;
+    return;
+  }
   if (batches_.empty() || batches_.back().kind != BatchKind::kShapes)
     batches_.push_back(Batch::of(BatchKind::kShapes, shapes_.size()));
   shapes_.push_back(s);
@@ -293,7 +297,13 @@ void Canvas::box_outline(glm::vec2 min, glm::vec2 max, float stroke, Rgba colour
 
 void Canvas::polyline(const std::vector<glm::vec2>& points, float width, Rgba colour) {
   if (points.size() == 1) disc(points[0], 0.5f * width, colour);
-  for (std::size_t i = 1; i < points.size(); ++i) capsule(points[i - 1], points[i], 0.5f * width, colour);
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    if (shapes_.size() >= kMaxShapes) {
+      dropped_ += points.size() - i;
+      return;
+    }
+    capsule(points[i - 1], points[i], 0.5f * width, colour);
+  }
 }
 
 namespace {
@@ -330,6 +340,10 @@ void Canvas::dashed_polyline(const std::vector<glm::vec2>& points, float width, 
   const glm::dvec2 lo(-margin, -margin), hi(width_ + margin, height_ + margin);
   double phase = 0;  // distance into the current dash+gap period
   for (std::size_t i = 1; i < points.size(); ++i) {
+    if (shapes_.size() >= kMaxShapes) {  // full: the rest would only be counted as dropped
+      dropped_ += points.size() - i;
+      return;
+    }
     const glm::dvec2 a(points[i - 1]), d = glm::dvec2(points[i]) - a;
     const double len = std::sqrt(d.x * d.x + d.y * d.y);
     if (!(len > 0) || !std::isfinite(len)) continue;
@@ -377,7 +391,11 @@ void Canvas::arrow(glm::vec2 tail, glm::vec2 head, float width, Rgba colour) {
 // With MSAA the rasteriser anti-aliases the edge itself, and without AA there is nothing to add.
 void Canvas::region(const std::vector<glm::vec2>& triangles, const std::vector<std::vector<glm::vec2>>& outline,
                     Rgba colour) {
-  const std::size_t n = triangles.size() - triangles.size() % 3;
+  std::size_t n = triangles.size() - triangles.size() % 3;
+  if (vertices_.size() + n > kMaxVertices) {
+    dropped_ += n;
+    n = 0;
+  }
   if (n > 0) {
     if (batches_.empty() || batches_.back().kind != BatchKind::kRegion)
       batches_.push_back(Batch::of(BatchKind::kRegion, vertices_.size()));
@@ -387,7 +405,7 @@ void Canvas::region(const std::vector<glm::vec2>& triangles, const std::vector<s
   }
   if (aa_ != AntiAliasing::kAnalytic) return;
   for (const auto& ring : outline)
-    for (std::size_t i = 0; ring.size() >= 2 && i < ring.size(); ++i)
+    for (std::size_t i = 0; ring.size() >= 2 && i < ring.size() && shapes_.size() < kMaxShapes; ++i)
       capsule(ring[i], ring[(i + 1) % ring.size()], 0.0f, colour);
 }
 
@@ -421,6 +439,11 @@ float Canvas::text_width(const std::string& utf8, int pixel_height) {
 
 void Canvas::text(const std::string& utf8, glm::vec2 pos, int pixel_height, Rgba colour, TextAlign align,
                   float angle) {
+  // At most one glyph per byte: a text that could not fit is dropped before it is laid out.
+  if (vertices_.size() + 6 * utf8.size() > kMaxVertices) {
+    dropped_ += 6 * utf8.size();
+    return;
+  }
   FontAtlas& f = font(pixel_height);
   std::vector<GlyphQuad> quads;
   const float advance = f.layout(utf8, &quads);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "render/canvas.h"
@@ -46,6 +47,25 @@ TEST(FarGeometry, DashPatternKeepsItsPhaseAcrossTheInvisiblePart) {
     checked += (u > 1 && u < 3) || (u > 4.5 && u < 6.5);
   }
   EXPECT_GT(checked, 20);
+}
+
+TEST(FarGeometry, AFrameQueuesAtMostTheCanvasLimitsAndCountsWhatItDrops) {
+  // A path of more visible points than the limit (a log with millions of path points winding
+  // over the map): memory stays bounded, the frame still draws, and the drop is counted.
+  Canvas canvas(kW, kH, AntiAliasing::kNone);
+  std::vector<glm::vec2> zigzag(Canvas::kMaxShapes + 1000);
+  for (std::size_t k = 0; k < zigzag.size(); ++k) zigzag[k] = {float(k % kW), float(k % 2 ? 5 : 35)};
+  canvas.polyline(zigzag, 1, hex(0x000000));
+  EXPECT_EQ(canvas.queued_shapes(), Canvas::kMaxShapes);
+  EXPECT_EQ(canvas.dropped(), zigzag.size() - 1 - Canvas::kMaxShapes);
+  canvas.dashed_polyline({{0, 1}, {float(kW), 1}}, 1, 4, 3, hex(0x000000));  // nothing more fits
+  EXPECT_EQ(canvas.queued_shapes(), Canvas::kMaxShapes);
+  const std::size_t before = canvas.dropped();
+  canvas.text(std::string(Canvas::kMaxVertices / 6 + 1, 'x'), {0, 20}, 12, hex(0x000000));
+  EXPECT_GT(canvas.dropped(), before) << "a text of more glyphs than the vertex limit is dropped";
+  std::vector<std::uint8_t> rgba(kW * kH * 4);
+  canvas.finish(rgba.data());
+  EXPECT_EQ(canvas.queued_shapes(), 0u);
 }
 
 TEST(FarGeometry, TicksOfRangesNoDoubleCanStepThroughAreTheEnds) {
