@@ -265,6 +265,10 @@ void Canvas::fill_rect(glm::vec2 min, glm::vec2 max, Rgba colour) {
 }
 
 void Canvas::push_shape(const Shape& s) {
+  if (shapes_.size() >= kMaxShapes) {
+    ++dropped_;
+    return;
+  }
   if (batches_.empty() || batches_.back().kind != BatchKind::kShapes)
     batches_.push_back(Batch::of(BatchKind::kShapes, shapes_.size()));
   shapes_.push_back(s);
@@ -293,24 +297,72 @@ void Canvas::box_outline(glm::vec2 min, glm::vec2 max, float stroke, Rgba colour
 
 void Canvas::polyline(const std::vector<glm::vec2>& points, float width, Rgba colour) {
   if (points.size() == 1) disc(points[0], 0.5f * width, colour);
-  for (std::size_t i = 1; i < points.size(); ++i) capsule(points[i - 1], points[i], 0.5f * width, colour);
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    if (shapes_.size() >= kMaxShapes) {
+      dropped_ += points.size() - i;
+      return;
+    }
+    capsule(points[i - 1], points[i], 0.5f * width, colour);
+  }
 }
 
+namespace {
+
+// The part [t0, t1] of the segment a + t d, t in [0, 1], inside the box [lo, hi] (Liang-Barsky);
+// false if none of it is.
+bool clip_segment(glm::dvec2 a, glm::dvec2 d, glm::dvec2 lo, glm::dvec2 hi, double& t0, double& t1) {
+  t0 = 0;
+  t1 = 1;
+  for (int k = 0; k < 2; ++k) {
+    if (d[k] == 0) {
+      if (a[k] < lo[k] || a[k] > hi[k]) return false;
+      continue;
+    }
+    double ta = (lo[k] - a[k]) / d[k], tb = (hi[k] - a[k]) / d[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 void Canvas::dashed_polyline(const std::vector<glm::vec2>& points, float width, float dash, float gap, Rgba colour) {
-  // The pattern runs on across vertices so dense polylines keep an even dash rhythm.
-  float phase = 0;  // distance into the current dash+gap period
-  const float period = dash + gap;
+  if (!(dash > 0) || !(gap > 0)) return polyline(points, width, colour);
+  // The pattern runs on across vertices so dense polylines keep an even dash rhythm. Only the
+  // part of each segment on the canvas is dashed (the pattern is advanced over the rest), so a
+  // segment far longer than the canvas (a zoomed-in view, a far point in a log) costs a few
+  // dashes, not one per 7 px of its length; in double, so the pattern keeps its place however
+  // far the segment runs.
+  const double period = double(dash) + gap, margin = width + 1.0;
+  const glm::dvec2 lo(-margin, -margin), hi(width_ + margin, height_ + margin);
+  double phase = 0;  // distance into the current dash+gap period
   for (std::size_t i = 1; i < points.size(); ++i) {
-    const glm::vec2 a = points[i - 1], d = points[i] - a;
-    const float len = std::sqrt(d.x * d.x + d.y * d.y);
-    if (len <= 0) continue;
-    float s = 0;
-    while (s < len) {
-      const float step = std::min(len - s, phase < dash ? dash - phase : period - phase);
-      if (phase < dash) capsule(a + d * (s / len), a + d * ((s + step) / len), 0.5f * width, colour);
+    if (shapes_.size() >= kMaxShapes) {  // full: the rest would only be counted as dropped
+      dropped_ += points.size() - i;
+      return;
+    }
+    const glm::dvec2 a(points[i - 1]), d = glm::dvec2(points[i]) - a;
+    const double len = std::sqrt(d.x * d.x + d.y * d.y);
+    if (!(len > 0) || !std::isfinite(len)) continue;
+    double t0 = 0, t1 = 0;
+    if (!clip_segment(a, d, lo, hi, t0, t1)) {
+      phase = std::fmod(phase + len, period);
+      continue;
+    }
+    double s = t0 * len;
+    const double end = t1 * len;
+    phase = std::fmod(phase + s, period);
+    while (s < end) {
+      const double step = std::min(end - s, phase < dash ? dash - phase : period - phase);
+      if (phase < dash)
+        capsule(glm::vec2(a + d * (s / len)), glm::vec2(a + d * ((s + step) / len)), 0.5f * width, colour);
       s += step;
       phase = std::fmod(phase + step, period);
     }
+    phase = std::fmod(phase + (len - end), period);
   }
 }
 
@@ -339,7 +391,11 @@ void Canvas::arrow(glm::vec2 tail, glm::vec2 head, float width, Rgba colour) {
 // With MSAA the rasteriser anti-aliases the edge itself, and without AA there is nothing to add.
 void Canvas::region(const std::vector<glm::vec2>& triangles, const std::vector<std::vector<glm::vec2>>& outline,
                     Rgba colour) {
-  const std::size_t n = triangles.size() - triangles.size() % 3;
+  std::size_t n = triangles.size() - triangles.size() % 3;
+  if (vertices_.size() + n > kMaxVertices) {
+    dropped_ += n;
+    n = 0;
+  }
   if (n > 0) {
     if (batches_.empty() || batches_.back().kind != BatchKind::kRegion)
       batches_.push_back(Batch::of(BatchKind::kRegion, vertices_.size()));
@@ -349,7 +405,7 @@ void Canvas::region(const std::vector<glm::vec2>& triangles, const std::vector<s
   }
   if (aa_ != AntiAliasing::kAnalytic) return;
   for (const auto& ring : outline)
-    for (std::size_t i = 0; ring.size() >= 2 && i < ring.size(); ++i)
+    for (std::size_t i = 0; ring.size() >= 2 && i < ring.size() && shapes_.size() < kMaxShapes; ++i)
       capsule(ring[i], ring[(i + 1) % ring.size()], 0.0f, colour);
 }
 
@@ -383,6 +439,11 @@ float Canvas::text_width(const std::string& utf8, int pixel_height) {
 
 void Canvas::text(const std::string& utf8, glm::vec2 pos, int pixel_height, Rgba colour, TextAlign align,
                   float angle) {
+  // At most one glyph per byte: a text that could not fit is dropped before it is laid out.
+  if (vertices_.size() + 6 * utf8.size() > kMaxVertices) {
+    dropped_ += 6 * utf8.size();
+    return;
+  }
   FontAtlas& f = font(pixel_height);
   std::vector<GlyphQuad> quads;
   const float advance = f.layout(utf8, &quads);

@@ -81,6 +81,18 @@ class Canvas {
             TextAlign align = TextAlign::kLeft, float angle = 0);
   float text_width(const std::string& utf8, int pixel_height);
 
+  // The most shapes, and triangle vertices (regions and text), one frame queues: 2^18 and 2^20
+  // (14 and 32 MB here, a few times that in llvmpipe's bins), several times what a real frame
+  // draws (a 200 x 200 maze's ~80000 walls, a path's dashes across a 4K frame, a traced mask's
+  // lumen), so only a degenerate log reaches them (a path of millions of points winding over
+  // the map, a title of megabytes). Beyond them a frame's drawing is dropped and counted, rather
+  // than memory growing with the input until allocation fails.
+  static constexpr std::size_t kMaxShapes = std::size_t(1) << 18;
+  static constexpr std::size_t kMaxVertices = std::size_t(1) << 20;
+  // Shapes queued since the last finish() (tests check that drawing stays bounded).
+  std::size_t queued_shapes() const { return shapes_.size(); }
+  // Shapes and vertices dropped over the limits above since the canvas was made.
+  std::size_t dropped() const { return dropped_; }
   // Draws everything queued since the last finish() and reads the picture back as top-down
   // RGBA8 rows (width*height*4 bytes). The queue starts empty again.
   void finish(std::uint8_t* rgba);
@@ -132,6 +144,7 @@ class Canvas {
   unsigned shape_program_ = 0, text_program_ = 0, region_program_ = 0;
   unsigned shape_vao_ = 0, shape_vbo_ = 0, vertex_vao_ = 0, vertex_vbo_ = 0;
   std::vector<glm::vec2> scratch_;
+  std::size_t dropped_ = 0;
 };
 
 }  // namespace vascsim::render

@@ -21,7 +21,12 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
   }
   const double step = nice_floor((hi - lo) / std::max(target, 1));
   const double first = std::ceil(lo / step - 1e-9) * step;
-  for (double t = first; t <= hi + 1e-9 * step; t += step) ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
+  // A range too wide for a double (hi - lo overflows) or too narrow for its values' precision
+  // (t + step == t) would never end the loop below: the axis gets its two ends.
+  if (!std::isfinite(hi - lo) || !std::isfinite(first) || first + step == first) return {lo, hi};
+  const std::size_t most = 10 * static_cast<std::size_t>(std::max(target, 1)) + 2;
+  for (double t = first; t <= hi + 1e-9 * step && ticks.size() < most; t += step)
+    ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
   return ticks;
 }
 

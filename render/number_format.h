@@ -9,7 +9,9 @@ namespace vascsim::render {
 
 // The largest value of the form {1, 2, 5} x 10^k that is <= x (x > 0).
 double nice_floor(double x);
-// Tick positions covering [lo, hi] with about `target` intervals, on a 1-2-5 step.
+// Tick positions covering [lo, hi] with about `target` intervals, on a 1-2-5 step; just {lo, hi}
+// for a range no double can step through (wider than the double range, or narrower than the
+// precision of its values).
 std::vector<double> nice_ticks(double lo, double hi, int target);
 // Formats a tick value so consecutive ticks (step apart) read distinctly and without noise.
 std::string format_tick(double value, double step);

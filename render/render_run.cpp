@@ -41,6 +41,15 @@ void validate_render_options(const RenderOptions& o) {
 
 namespace {
 
+// A frame over the canvas's limits (Canvas::kMaxShapes: a log whose path, walls or lumen has
+// millions of points) is drawn incomplete; the report says so rather than nothing.
+std::string dropped_note(const Canvas& canvas) {
+  if (canvas.dropped() == 0) return "";
+  return "warning: " + std::to_string(canvas.dropped()) + " shapes and vertices over a frame's limits (" +
+         std::to_string(Canvas::kMaxShapes) + " shapes, " + std::to_string(Canvas::kMaxVertices) +
+         " vertices) were not drawn (a path, walls or lumen of millions of points in the log?)";
+}
+
 // `vascsim render RUN --still T --png FILE`: one view, the same pixels the replay server sends.
 RenderReport render_still(const FrameSource& source, const RenderOptions& o) {
   std::error_code ec;
@@ -58,6 +67,7 @@ RenderReport render_still(const FrameSource& source, const RenderOptions& o) {
   write_png(o.png_path, rgba.data(), o.view.width, o.view.height);
   RenderReport report;
   report.frames = 1;
+  report.note = dropped_note(canvas);
   return report;
 }
 
@@ -204,6 +214,8 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
     report.video_codec = video->codec();
     report.note = video->note();
   }
+  if (const std::string dropped = dropped_note(canvas); !dropped.empty())
+    report.note += (report.note.empty() ? "" : "; ") + dropped;
   report.frames = count;
   return report;
 }

@@ -93,22 +93,29 @@ FrameLogWriter::FrameLogWriter(const std::string& path, const FrameLogHeader& he
                      std::to_string(kMaxMetadataBytes >> 20) + " MB limit (a path or wall list too finely sampled?)");
   file_ = std::fopen(path.c_str(), "wb");
   if (!file_) throw InputError(path + ": cannot create frame log (" + std::strerror(errno) + ")");
-
-  std::string bytes(kMagic, sizeof kMagic);
-  put_u32(bytes, kFrameLogVersion);
-  put_u32(bytes, header_.node_count);
-  put_u32(bytes, static_cast<std::uint32_t>(header_.channels.size()));
-  for (const auto& c : header_.channels) {
-    put_string(bytes, c.name);
-    put_string(bytes, c.unit);
-    put_u8(bytes, static_cast<std::uint8_t>(c.layout));
-    put_u32(bytes, c.count);
+  // Closed if the header cannot be written (a full disk): the destructor does not run for a
+  // constructor that throws. The file is left as it is (it may be the user's device or pipe).
+  try {
+    std::string bytes(kMagic, sizeof kMagic);
+    put_u32(bytes, kFrameLogVersion);
+    put_u32(bytes, header_.node_count);
+    put_u32(bytes, static_cast<std::uint32_t>(header_.channels.size()));
+    for (const auto& c : header_.channels) {
+      put_string(bytes, c.name);
+      put_string(bytes, c.unit);
+      put_u8(bytes, static_cast<std::uint8_t>(c.layout));
+      put_u32(bytes, c.count);
+    }
+    put_string(bytes, header_.metadata);
+    // Records start 8-byte aligned so a reader may map the file and view them as doubles.
+    while (bytes.size() % 8 != 0) bytes.push_back('\0');
+    if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size() || std::fflush(file_) != 0)
+      throw InputError(path_ + ": cannot write frame log header (" + std::strerror(errno) + ")");
+  } catch (...) {
+    std::fclose(file_);
+    file_ = nullptr;
+    throw;
   }
-  put_string(bytes, header_.metadata);
-  // Records start 8-byte aligned so a reader may map the file and view them as doubles.
-  while (bytes.size() % 8 != 0) bytes.push_back('\0');
-  if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size() || std::fflush(file_) != 0)
-    throw InputError(path_ + ": cannot write frame log header (" + std::strerror(errno) + ")");
   record_.resize(header_.record_doubles());
 }
 
@@ -141,6 +148,18 @@ void FrameLogWriter::close() {
 FrameLogReader::FrameLogReader(const std::string& path) : path_(path) {
   file_ = std::fopen(path.c_str(), "rb");
   if (!file_) throw InputError(path + ": cannot open frame log (" + std::strerror(errno) + ")");
+  // A refused file is closed here: the destructor does not run for a constructor that throws.
+  try {
+    read_header();
+  } catch (...) {
+    std::fclose(file_);
+    file_ = nullptr;
+    throw;
+  }
+}
+
+void FrameLogReader::read_header() {
+  const std::string& path = path_;
   ByteCursor in(path_, file_);
   char magic[8];
   in.bytes(magic, 8);

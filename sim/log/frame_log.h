@@ -102,6 +102,8 @@ class FrameLogReader {
   std::size_t frame_at_time(double t) const;
 
  private:
+  void read_header();  // into header_ and data_offset_; throws InputError
+
   std::string path_;
   FrameLogHeader header_;
   std::FILE* file_ = nullptr;

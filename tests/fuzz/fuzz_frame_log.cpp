@@ -1,6 +1,8 @@
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -50,7 +52,7 @@ int frame_log(const std::uint8_t* data, std::size_t size) {
   {
     std::ofstream out(input_path(), std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-    if (!out) fail("cannot write " + input_path());
+    if (!out) fail("cannot write " + input_path() + " (" + std::strerror(errno) + ")");
   }
   try {
     const render::FrameSource source(input_path());
