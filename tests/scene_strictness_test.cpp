@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "sim/io/json_fields.h"
 #include "sim/io/log_metadata.h"
 #include "sim/io/scene_reader.h"
 #include "sim/scene/input_error.h"
@@ -23,6 +24,20 @@ std::string error_of(const std::string& text) {
   }
   ADD_FAILURE() << "accepted: " << text.substr(0, 80);
   return "";
+}
+
+// Well-formed UTF-8 (no check of overlong forms: the question is only whether a cut split a
+// character).
+bool valid_utf8(const std::string& text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const auto lead = static_cast<unsigned char>(text[i]);
+    const std::size_t length = lead < 0x80 ? 1 : (lead >> 5) == 6 ? 2 : (lead >> 4) == 14 ? 3 : (lead >> 3) == 30 ? 4 : 0;
+    if (length == 0 || i + length > text.size()) return false;
+    for (std::size_t k = 1; k < length; ++k)
+      if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) return false;
+    i += length;
+  }
+  return true;
 }
 
 void expect_error(const std::string& text, const std::string& needle) {
@@ -63,6 +78,24 @@ TEST(SceneStrictness, DeepNestingIsRefusedWithoutRecursion) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("run/frames.vlog"), std::string::npos) << e.what();
   }
+}
+
+// Found by the scene fuzz harness (tests/fuzz/regressions/scene/long_string_cut_inside_a_character.json):
+// a long string quoted in a message was cut inside a two-byte character, and dumping the cut
+// text threw nlohmann's type_error (terminate). Messages quote whole characters only.
+TEST(SceneStrictness, ALongNonAsciiValueIsQuotedShortenedAtACharacterBoundary) {
+  std::string cyrillic;
+  for (int i = 0; i < 40; ++i) cyrillic += "\xd1\x9c";  // U+045C, two bytes: 80 bytes in all
+  for (const std::size_t shift : {0, 1}) {
+    const std::string value = std::string(shift, 'a') + cyrillic;
+    const std::string message = error_of("{\"maze\": null, \"rod\": \"" + value + "\"}");
+    EXPECT_NE(message.find("/rod"), std::string::npos) << message;
+    EXPECT_NE(message.find("..."), std::string::npos) << "the value is shortened: " << message;
+    EXPECT_TRUE(valid_utf8(message)) << "the message is not valid UTF-8: " << message;
+  }
+  EXPECT_EQ(io::utf8_prefix("a\xd1\x9c", 2), "a");
+  EXPECT_EQ(io::utf8_prefix("a\xd1\x9c", 3), "a\xd1\x9c");
+  EXPECT_EQ(io::utf8_prefix("ab", 5), "ab");
 }
 
 TEST(SceneStrictness, TheCommandLineExitsTwoNamingTheFile) {

@@ -8,9 +8,8 @@
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
-#include "sim/io/log_metadata.h"
 #include "sim/io/output_file.h"
-#include "sim/io/provenance.h"
+#include "sim/io/run_log.h"
 #include "sim/io/run_summary.h"
 #include "sim/io/scene_reader.h"
 #include "sim/run/compile.h"
@@ -45,15 +44,6 @@ void print_usage() {
       format_options(kOptions).c_str());
 }
 
-class LogSink : public FrameSink {
- public:
-  explicit LogSink(FrameLogWriter& writer) : writer_(writer) {}
-  void write(double time, const std::vector<double>& values) override { writer_.append(time, values); }
-
- private:
-  FrameLogWriter& writer_;
-};
-
 // Progress on a terminal only, refreshed at most 10 times a second, shown after the first second.
 class Progress {
  public:
@@ -81,39 +71,6 @@ class Progress {
   double last_ = 0.0;
   bool shown_ = false;
 };
-
-LogMetadata metadata_for(const Scene& scene, const Run& run) {
-  LogMetadata m;
-  m.title = scene.name;
-  m.scene_json = scene_to_json(scene);
-  const Provenance provenance = provenance_of(m.scene_json);
-  m.vascsim_version = provenance.version;
-  m.commit = provenance.commit;
-  m.scene_hash = provenance.scene_hash;
-  m.rod_outer_radius = scene.rod.outer_radius;
-  m.rod_length = scene.rod.length;
-  m.output_interval = scene.run.output_interval;
-  if (const Navigation* nav = run.navigation()) {
-    m.bounds = nav->environment.bounds;
-    m.walls = nav->environment.walls;
-    m.lumen_width = nav->environment.lumen_width;
-    m.lumen = nav->environment.lumen;
-    m.path = nav->trajectory->sample(1e-4);
-    m.start = nav->environment.start;
-    m.goal = nav->environment.goal;
-  } else {
-    // Free space: the bounds of the initial rod, padded by a tenth of its length.
-    const auto& x = run.state().x;
-    Box2 b{Vec2(x[0], x[1]), Vec2(x[0], x[1])};
-    for (Eigen::Index i = 0; i < x.size(); i += 2) {
-      b.min = b.min.cwiseMin(Vec2(x[i], x[i + 1]));
-      b.max = b.max.cwiseMax(Vec2(x[i], x[i + 1]));
-    }
-    const Vec2 pad = Vec2::Constant(0.1 * scene.rod.length);
-    m.bounds = {b.min - pad, b.max + pad};
-  }
-  return m;
-}
 
 // A forced run first removes what a previous run wrote here, so the directory never mixes two
 // runs (an old summary beside a new partial log, an old video beside a new log). The user's
@@ -191,13 +148,9 @@ int run_run_command(int argc, char** argv) {
 
   remove_stale_temporaries(*out);  // a killed earlier run's summary.json under its temporary name
 
-  FrameLogHeader header;
-  header.node_count = static_cast<std::uint32_t>(scene.rod.nodes);
-  header.channels = run.channels();
-  header.metadata = write_log_metadata(metadata_for(scene, run));
   const std::string log_path = (fs::path(*out) / "frames.vlog").string();
-  FrameLogWriter writer(log_path, header);
-  LogSink sink(writer);
+  FrameLogWriter writer(log_path, run_log_header(run));
+  FrameLogSink sink(writer);
   Progress progress(!args.flag("quiet"), scene.run.duration);
   const bool ok = run.run(sink, [&](double t) { progress.update(t); });
   progress.finish();

@@ -18,6 +18,13 @@ std::string format_number(double value) {
   return s.str();
 }
 
+std::string utf8_prefix(const std::string& text, std::size_t max) {
+  if (text.size() <= max) return text;
+  std::size_t cut = max;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return text.substr(0, cut);
+}
+
 std::string describe(const json& value) {
   if (value.is_object()) return "an object";
   // Never dump what may be large or deep: a message quotes at most a short flat array.
@@ -27,9 +34,9 @@ std::string describe(const json& value) {
     if (!flat) return "an array of " + std::to_string(value.size());
   }
   if (value.is_string() && value.get_ref<const std::string&>().size() > 60)
-    return json(value.get_ref<const std::string&>().substr(0, 57)).dump() + "...";
+    return json(utf8_prefix(value.get_ref<const std::string&>(), 57)).dump() + "...";
   std::string s = value.dump();
-  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  if (s.size() > 60) s = utf8_prefix(s, 57) + "...";
   return s;
 }
 

@@ -57,6 +57,9 @@ class FieldReader {
 // Short rendering of a JSON value for messages ("0", "\"abc\"", "an object", ...); never dumps
 // a large or deep value.
 std::string describe(const nlohmann::json& value);
+// The first bytes of UTF-8 text, at most `max`, never ending inside a character: a shortened
+// message stays valid UTF-8 (json::dump throws on text that is not).
+std::string utf8_prefix(const std::string& text, std::size_t max);
 
 // Deepest nesting a scene, a log's metadata or any file vascsim reads may have.
 inline constexpr int kMaxJsonDepth = 64;

@@ -65,7 +65,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                        {"paper_contact_iterations_max", s.paper_contact_iterations_max},
                        {"trajectory_duration", run.navigation()->trajectory->duration()}};
   }
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n";  // a scene file name need not be UTF-8
 }
 
 }  // namespace vascsim

@@ -52,7 +52,7 @@ std::string last_line(const fs::path& log) {
   std::string line, last;
   while (std::getline(lines, line))
     if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-  if (last.size() > 300) last = last.substr(0, 297) + "...";
+  if (last.size() > 300) last = io::utf8_prefix(last, 297) + "...";
   return last;
 }
 

@@ -169,7 +169,7 @@ std::string sweep_results_json(const SweepManifest& m, const std::vector<RunOutc
   }
   j["per_axis"] = summary;
   j["runs"] = runs;
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n";  // file names, child stderr: maybe not UTF-8
 }
 
 }  // namespace vascsim
