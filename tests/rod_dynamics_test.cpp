@@ -295,7 +295,7 @@ TEST(RodDynamics, FailedStepKeepsStateAndAdaptiveRetrySucceeds) {
   PointLoadSpec tip;
   tip.force = Vec2(0.0, 0.05);  // large for this soft rod: the tip swings far in one big step
   scene.loads.point_loads.push_back(tip);
-  scene.solver.adaptive = false;
+  scene.solver.adaptive = StepControl::kOff;
   {
     const Model model = *compile(scene);
     State s = initial_state(model);
@@ -308,7 +308,7 @@ TEST(RodDynamics, FailedStepKeepsStateAndAdaptiveRetrySucceeds) {
     EXPECT_EQ(s.v, before.v);
     EXPECT_EQ(s.t, 0.0);
   }
-  scene.solver.adaptive = true;
+  scene.solver.adaptive = StepControl::kRetry;
   const Model model = *compile(scene);
   State s = initial_state(model);
   Workspace ws(model);

@@ -15,7 +15,13 @@ TEST(SolverSections, PresetThenExplicitOverride) {
   EXPECT_EQ(s.solver.scheme, Scheme::kBdf2);
   EXPECT_EQ(s.solver.dt, 4e-3);
   EXPECT_EQ(s.solver.rel_tol, 1e-7);
-  EXPECT_TRUE(s.solver.adaptive);
+  EXPECT_EQ(s.solver.adaptive, StepControl::kRetry);
+  const Scene e = read_scene_text(R"({"maze": null, "solver": {"adaptive": "error", "rtol": 1e-5}})", "t.json");
+  EXPECT_EQ(e.solver.adaptive, StepControl::kError);
+  EXPECT_EQ(e.solver.rtol, 1e-5);
+  // The older spelling, as the scenes stored in older logs have it.
+  EXPECT_EQ(read_scene_text(R"({"maze": null, "solver": {"adaptive": true}})", "t.json").solver.adaptive, StepControl::kRetry);
+  EXPECT_EQ(read_scene_text(R"({"maze": null, "solver": {"adaptive": false}})", "t.json").solver.adaptive, StepControl::kOff);
 }
 
 TEST(SolverSections, RoundTripIsStable) {

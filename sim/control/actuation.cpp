@@ -10,7 +10,9 @@ namespace vascsim {
 namespace {
 
 // Force mode: the PD-controlled magnetic force on the tip node(s), applied implicitly inside
-// Newton (TipServoModule), its reference moving from r(t) to r(t + dt) over the step.
+// Newton (TipServoModule): at the step's end t + dt it acts with the reference's position and
+// velocity at t + dt, so the force does not depend on the step size (a secant velocity over the
+// step would, and error control would see that as an error that no step is short enough to fix).
 class ForceActuation : public Actuation {
  public:
   explicit ForceActuation(const ControlSpec& spec) : spec_(spec) {}
@@ -22,7 +24,7 @@ class ForceActuation : public Actuation {
     servo.active = true;
     servo.first_node = s.nodes - std::min(spec_.actuated_nodes, s.nodes);
     servo.feedforward = c.feedforward;
-    servo.velocity = (c.reference - s.reference_now) / s.dt;
+    servo.velocity = c.reference_velocity;
     servo.position = c.reference - servo.velocity * s.dt;
     servo.kp = spec_.kp;
     servo.kd = spec_.kd;

@@ -20,7 +20,6 @@ struct ActuationStep {
   double dt = 0.0;                     // s
   int nodes = 0;
   Vec2 tip = Vec2::Zero();             // m, the committed tip position
-  Vec2 reference_now = Vec2::Zero();   // m, the reference at the start of the step
   Vec2 tip_offset = Vec2::Zero();      // m, a position disturbance at the step's end (kinematic)
 };
 

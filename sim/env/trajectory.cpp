@@ -131,6 +131,24 @@ Trajectory::Progress Trajectory::progress(double t) const {
   return p;
 }
 
+std::vector<double> Trajectory::breakpoints() const {
+  std::vector<double> times = {0.0};
+  if (ramp_ > 0.0) times.insert(times.end(), {ramp_, duration_ - ramp_});
+  // Piece ends: the time law is monotone in t, so bisection finds when it reaches each.
+  for (std::size_t k = 1; k < pieces_.size(); ++k) {
+    double lo = 0.0, hi = duration_;
+    for (int i = 0; i < 100 && hi - lo > 1e-12 * std::max(1.0, duration_); ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (progress(mid).s < pieces_[k].s0 ? lo : hi) = mid;
+    }
+    times.push_back(hi);
+  }
+  times.push_back(duration_);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
 double Trajectory::Piece::angle_at(double s) const {
   return angle0 + std::copysign(std::clamp(s - s0, 0.0, length) / radius, turn);
 }

@@ -60,6 +60,11 @@ class Trajectory {
   Polyline sample(double max_chord_error) const;
 
   const std::vector<Piece>& pieces() const { return pieces_; }
+  // The times (s, sorted, from 0 to duration()) where the velocity or the acceleration jumps:
+  // the start and the end, the ends of the ramps, and where one piece meets the next (the
+  // centripetal acceleration starts or stops). A reference-following force is discontinuous
+  // there, so error-controlled stepping ends a step on each and starts afresh.
+  std::vector<double> breakpoints() const;
 
  private:
   const Piece& piece_at(double s) const;

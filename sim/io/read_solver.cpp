@@ -4,8 +4,26 @@ namespace vascsim::io {
 
 using nlohmann::json;
 
-// The preset is read first and fills scheme, dt and rel_tol; fields given explicitly override
-// it. The writer records the resolved values and the preset, so reading its output is stable.
+namespace {
+
+const char* step_control_name(StepControl c) {
+  return c == StepControl::kError ? "error" : c == StepControl::kRetry ? "retry" : "off";
+}
+
+// "error", "retry" or "off"; true and false are the older spelling (before error control) of
+// "retry" and "off", kept so that the scenes stored in older logs read as they ran.
+StepControl read_step_control(FieldReader& in, StepControl fallback) {
+  if (const nlohmann::json* raw = in.raw("adaptive"); raw && raw->is_boolean())
+    return in.boolean("adaptive", false) ? StepControl::kRetry : StepControl::kOff;
+  const std::string name = in.choice("adaptive", step_control_name(fallback), {"error", "retry", "off"});
+  return name == "error" ? StepControl::kError : name == "retry" ? StepControl::kRetry : StepControl::kOff;
+}
+
+}  // namespace
+
+// The preset is read first and fills the scheme, the step control, dt and the tolerances; fields
+// given explicitly override it. The writer records the
+// resolved values and the preset, so reading its output is stable.
 void read_solver(FieldReader& in, SolverSpec& out) {
   const std::string mode = in.choice("mode", out.mode == SolveMode::kStatic ? "static" : "dynamic", {"dynamic", "static"});
   out.mode = mode == "static" ? SolveMode::kStatic : SolveMode::kDynamic;
@@ -14,12 +32,20 @@ void read_solver(FieldReader& in, SolverSpec& out) {
   const std::string scheme =
       in.choice("scheme", out.scheme == Scheme::kBdf2 ? "bdf2" : "backward_euler", {"backward_euler", "bdf2"});
   out.scheme = scheme == "bdf2" ? Scheme::kBdf2 : Scheme::kBackwardEuler;
+  out.adaptive = read_step_control(in, out.adaptive);
   out.dt = in.positive("dt", out.dt, 10.0);
+  out.rtol = in.number("rtol", out.rtol, 0.0, 1.0);
+  out.atol_position = in.number("atol_position", out.atol_position, 0.0, 1.0);
+  out.atol_velocity = in.number("atol_velocity", out.atol_velocity, 0.0, 100.0);
+  if (out.adaptive == StepControl::kError && !(out.rtol > 0 || out.atol_position > 0 || out.atol_velocity > 0))
+    in.fail("rtol", "a positive rtol, atol_position or atol_velocity for \"adaptive\": \"error\"",
+            in.raw("rtol") ? *in.raw("rtol") : nlohmann::json(out.rtol));
+  out.dt_max = in.positive("dt_max", out.dt_max, 10.0);
+  out.dt_min = in.positive("dt_min", out.dt_min, out.dt_max);
   out.rel_tol = in.positive("rel_tol", out.rel_tol, 1.0);
   out.abs_tol = in.number("abs_tol", out.abs_tol, 0.0, 1e9);
   out.step_tol = in.positive("step_tol", out.step_tol, 1.0);
   out.max_iterations = static_cast<int>(in.integer("max_iterations", out.max_iterations, 1, 1000));
-  out.adaptive = in.boolean("adaptive", out.adaptive);
   out.max_halvings = static_cast<int>(in.integer("max_halvings", out.max_halvings, 0, 40));
   out.load_steps = static_cast<int>(in.integer("load_steps", out.load_steps, 1, 100000));
   in.finish();
@@ -34,7 +60,12 @@ json write_solver(const SolverSpec& spec) {
           {"abs_tol", spec.abs_tol},
           {"step_tol", spec.step_tol},
           {"max_iterations", spec.max_iterations},
-          {"adaptive", spec.adaptive},
+          {"adaptive", step_control_name(spec.adaptive)},
+          {"rtol", spec.rtol},
+          {"atol_position", spec.atol_position},
+          {"atol_velocity", spec.atol_velocity},
+          {"dt_min", spec.dt_min},
+          {"dt_max", spec.dt_max},
           {"max_halvings", spec.max_halvings},
           {"load_steps", spec.load_steps}};
 }

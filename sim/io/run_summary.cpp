@@ -30,6 +30,14 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   j["mode"] = is_static ? "static" : "dynamic";  // static: steps are load increments, time the load scale
   j["steps"] = s.steps;
   j["rejected_steps"] = s.rejected_steps;
+  if (!is_static) {
+    // The step sizes taken; with error control also the rejections and the largest error kept.
+    j["step_size"] = {{"min", s.steps ? json(s.dt_min) : json(nullptr)},
+                      {"max", s.steps ? json(s.dt_max) : json(nullptr)},
+                      {"mean", s.steps ? json(s.simulated_time / s.steps) : json(nullptr)}};
+    if (scene.solver.adaptive == StepControl::kError)
+      j["error_control"] = {{"rejected_steps", s.error_rejected_steps}, {"error_max", s.error_max}};
+  }
   j["newton_iterations"] = {{"total", s.newton_iterations},
                             {"mean", s.steps ? static_cast<double>(s.newton_iterations) / s.steps : 0.0},
                             {"max", s.newton_iterations_max}};

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "sim/contact/paper_contact.h"
 #include "sim/log/channel_names.h"
+#include "sim/step/local_error.h"
 #include "sim/step/statics.h"
 #include "sim/step/stepper.h"
 
@@ -27,9 +29,18 @@ Run::Run(std::shared_ptr<const Model> model)
       state_(initial_state(*model_)),
       workspace_(*model_) {
   const int n = model_->nodes();
+  if (model_->solver.adaptive == StepControl::kError) {
+    step_size_.emplace(model_->solver.dt_min, model_->solver.dt_max);
+    error_weights_ = {model_->solver.rtol, model_->solver.atol_position, model_->solver.atol_velocity, scene_.rod.length};
+  }
   if (navigation_) {
     controller_.emplace(scene_.control, *navigation_->trajectory, navigation_->plant);
     stats_.contact_time.assign(static_cast<std::size_t>(n), 0.0);
+    // A step ends 1 ns before each jump: forces are evaluated at the step's end, which must still
+    // see the values before it; the next step, starting afresh, sees those after.
+    if (step_size_)
+      for (const double b : navigation_->trajectory->breakpoints())
+        if (b + scene_.control.lead_time > 2e-9) breakpoints_.push_back(b + scene_.control.lead_time - 1e-9);
   }
   const std::uint32_t node_values = static_cast<std::uint32_t>(2 * n);
   channels_.push_back({channel::kPosition, "m", ChannelLayout::kNodeVectors, node_values});
@@ -55,17 +66,15 @@ Controls Run::controls_for_step(double dt) {
   step.dt = dt;
   step.nodes = model_->nodes();
   step.tip = state_.position(tip);
-  step.reference_now = navigation_->trajectory->position(controller_->reference_time(state_.t));
   step.tip_offset = controller_->position_disturbance(state_.t + dt);
   navigation_->actuation->set_controls(last_command_, step, controls);
   controls.wall_forces = wall_forces_;
   return controls;
 }
 
-bool Run::advance(double dt) {
+bool Run::attempt(double dt, Controls& controls, StepReport& report) {
   const double t_start = state_.t;  // warnings are dated by the step's start
-  Controls controls = controls_for_step(dt);
-  StepReport report;
+  controls = controls_for_step(dt);
   if (navigation_ && navigation_->paper_walls) {
     // The paper's contact: re-solve the step with updated wall forces until no node is inside.
     const State start = state_;
@@ -99,12 +108,69 @@ bool Run::advance(double dt) {
     return false;
   }
   if (report.round_off_stop) stats_.warnings.newton_round_off.note(t_start);
+  return true;
+}
+
+void Run::commit(const StepReport& report, const Controls& controls) {
   ++stats_.steps;
   stats_.newton_iterations += report.iterations;
   stats_.newton_iterations_max = std::max(stats_.newton_iterations_max, report.iterations);
+  stats_.dt_min = std::min(stats_.dt_min, report.dt);
+  stats_.dt_max = std::max(stats_.dt_max, report.dt);
   last_controls_ = controls;
   update_statistics(report.dt, controls);
+}
+
+bool Run::advance(double dt) {
+  Controls controls;
+  StepReport report;
+  if (!attempt(dt, controls, report)) return false;
+  commit(report, controls);
   return true;
+}
+
+// Error control: the step is kept if its estimated local error is within tolerance, otherwise
+// the state goes back and a shorter step is tried. `dt` is the step the controller proposed
+// (already cut to the next output time); returns the step it proposes next, 0 on failure.
+double Run::advance_controlled(double dt) {
+  const State before = state_;
+  const std::vector<NodeForce> wall_forces_before = wall_forces_;
+  double h = dt;
+  for (;;) {
+    Controls controls;
+    StepReport report;
+    if (!attempt(h, controls, report)) return 0.0;
+    // A Newton retry may have shortened the step: the estimate uses the step taken.
+    const int order = step_order(model_->solver.scheme, before, report.dt);
+    // Positions: error per unit step, the tolerance per second of simulated time, so that a run's
+    // accumulated error stays near its duration times the tolerance whatever the step count
+    // (error per step would let it grow as the tolerance tightens). Velocities: error per step,
+    // because theirs carries the solve's own error in x divided by h, which no shorter step
+    // reduces (docs/solver.md, "Step size").
+    const LocalError local = local_error(before, state_, order, workspace_.fixed, error_weights_);
+    const double err = local.estimated() ? std::max(local.position / (report.dt / 1.0), local.velocity) : -1.0;
+    if (err <= 1.0) {
+      commit(report, controls);
+      error_weights_.speed = std::max(error_weights_.speed, state_.v.lpNorm<Eigen::Infinity>());
+      stats_.error_max = std::max(stats_.error_max, err);
+      return err < 0 ? report.dt : step_size_->accepted(report.dt, err, order);
+    }
+    if (report.dt <= model_->solver.dt_min * (1 + 1e-12)) {
+      stats_.failed = true;
+      char message[240];
+      std::snprintf(message, sizeof message,
+                    "at t = %.9g s the local error is %.3g times the tolerance at the smallest step, solver.dt_min = %.3g s "
+                    "(raise the tolerance or lower dt_min)",
+                    before.t, err, model_->solver.dt_min);
+      stats_.failure = message;
+      state_ = before;
+      return 0.0;
+    }
+    ++stats_.error_rejected_steps;
+    h = step_size_->rejected(report.dt, err, order);
+    state_ = before;
+    wall_forces_ = wall_forces_before;
+  }
 }
 
 Eigen::VectorXd Run::channel_force(const std::string& name, const Controls& controls) const {
@@ -201,15 +267,44 @@ bool Run::run(FrameSink& sink, const std::function<void(double)>& progress) {
   const auto wall_start = Clock::now();
   const double duration = scene_.run.duration;
   const double interval = scene_.run.output_interval;
-  const double dt = model_->solver.dt;
+  const bool controlled = model_->solver.adaptive == StepControl::kError;
+  double proposed = model_->solver.dt;  // error control: the controller's next step
   record(sink);
-  std::size_t next_frame = 1;
+  std::size_t next_frame = 1, next_break = 0;
   bool ok = true;
   while (state_.t < duration * (1.0 - 1e-12)) {
-    // Steps land exactly on output times so that frames are evenly spaced.
+    // Steps land exactly on output times, so that every frame is a converged state (an
+    // interpolated one could put the rod inside a wall, where the barrier is infinite) and
+    // frames are evenly spaced. Error control halves the distance rather than leave a sliver.
     const double next_output = std::min(duration, static_cast<double>(next_frame) * interval);
-    const double h = std::min(dt, next_output - state_.t);
-    if (!advance(h)) {
+    // Error control also ends a step where the controller's inputs jump (breakpoints_).
+    const bool at_break = next_break < breakpoints_.size() && breakpoints_[next_break] < next_output;
+    const double stop = at_break ? breakpoints_[next_break] : next_output;
+    const double remaining = stop - state_.t;
+    double h = std::min(proposed, remaining);
+    if (controlled && h < remaining && h > 0.5 * remaining) h = 0.5 * remaining;
+    if (controlled) {
+      const int rejections = stats_.error_rejected_steps;
+      const double next = advance_controlled(h);
+      if (next <= 0.0) {
+        ok = false;
+        break;
+      }
+      // A step cut short by an output time does not shrink the ones after it.
+      proposed = h < proposed && stats_.error_rejected_steps == rejections ? std::max(next, proposed) : next;
+      if (state_.h_prev < 1e-3 * proposed) {
+        // A sliver (an output time just after a breakpoint) predicts nothing: its difference
+        // quotients are round-off. The history starts again after it.
+        state_.h_prev = state_.h_prev2 = 0.0;
+      }
+      if (at_break && state_.t >= stop * (1.0 - 1e-12)) {
+        // The history before a jump predicts nothing after it: start again from one step of
+        // backward Euler, no longer than the first step of the run.
+        ++next_break;
+        state_.h_prev = state_.h_prev2 = 0.0;
+        proposed = std::min(proposed, model_->solver.dt);
+      }
+    } else if (!advance(h)) {
       ok = false;
       break;
     }

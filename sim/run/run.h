@@ -16,7 +16,10 @@
 #include "sim/log/frame_log.h"
 #include "sim/run/navigation.h"
 #include "sim/step/model.h"
+#include "sim/step/local_error.h"
 #include "sim/step/newton.h"
+#include "sim/step/step_size_controller.h"
+#include "sim/step/stepper.h"
 
 namespace vascsim {
 
@@ -49,7 +52,11 @@ struct RunStatistics {
   int steps = 0;
   long long newton_iterations = 0;
   int newton_iterations_max = 0;     // in one step
-  int rejected_steps = 0;            // attempts retried with a smaller dt
+  int rejected_steps = 0;            // attempts retried with a smaller dt (Newton failed)
+  int error_rejected_steps = 0;      // error control: converged steps over the tolerance, retried shorter
+  double error_max = 0.0;            // error control: largest accepted error estimate / tolerance
+  double dt_min = std::numeric_limits<double>::infinity();  // s, shortest step taken
+  double dt_max = 0.0;               // s, longest step taken
   std::size_t frames = 0;
   double simulated_time = 0.0;       // s
   double wall_time = 0.0;            // s
@@ -94,7 +101,13 @@ class Run {
  private:
   // The controller's inputs for the next step (remembers the command for the log).
   Controls controls_for_step(double dt);
+  // One converged step of dt (Newton retries may shorten it), not yet counted; false (the run's
+  // failure recorded) if it could not be taken.
+  bool attempt(double dt, Controls& controls, StepReport& report);
+  // Counts the step just taken in the statistics.
+  void commit(const StepReport& report, const Controls& controls);
   bool advance(double dt);
+  double advance_controlled(double dt);
   bool solve_equilibrium(FrameSink& sink);
   void record(FrameSink& sink);
   void update_statistics(double dt, const Controls& controls);
@@ -108,6 +121,9 @@ class Run {
   const Scene& scene_;            // model_->scene
   const Navigation* navigation_;  // model_->navigation, or null
   std::optional<TipController> controller_;
+  std::optional<StepSizeController> step_size_;      // error control only
+  LocalErrorWeights error_weights_;
+  std::vector<double> breakpoints_;                  // s, error control: where the reference's velocity or acceleration jumps
   ContactNeighbours probe_neighbours_;               // the gap statistics' lists (every contact mode)
   State state_;
   Workspace workspace_;

@@ -16,6 +16,11 @@ struct State {
   Eigen::VectorXd x_prev;  // (2N), m
   Eigen::VectorXd v_prev;  // (2N), m/s
   double h_prev = 0.0;     // s
+  // The step before that, for the error estimate's predictor (sim/step/local_error.h); h_prev2 = 0
+  // when there is none.
+  Eigen::VectorXd x_prev2;  // (2N), m
+  Eigen::VectorXd v_prev2;  // (2N), m/s
+  double h_prev2 = 0.0;     // s
 
   int nodes() const { return static_cast<int>(x.size() / 2); }
   Eigen::Vector2d position(int node) const { return x.segment<2>(2 * node); }

@@ -64,6 +64,7 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
   state.x = x;
   state.v.setZero();
   state.h_prev = 0.0;
+  state.h_prev2 = 0.0;
   return report;
 }
 

@@ -25,13 +25,11 @@ void set_targets(const Model& model, const Controls& controls, double t, Workspa
 bool attempt(const Model& model, State& state, Workspace& ws, const Controls& controls, double h, StepReport& report) {
   // Scheme coefficients (see stepper.h).
   double a1 = 1.0, a2 = 0.0, beta = 1.0;
-  if (model.solver.scheme == Scheme::kBdf2 && state.h_prev > 0.0) {
+  if (step_order(model.solver.scheme, state, h) == 2) {
     const double w = h / state.h_prev;
-    if (w <= 2.0) {
-      a1 = (1.0 + w) * (1.0 + w) / (1.0 + 2.0 * w);
-      a2 = w * w / (1.0 + 2.0 * w);
-      beta = (1.0 + w) / (1.0 + 2.0 * w);
-    }
+    a1 = (1.0 + w) * (1.0 + w) / (1.0 + 2.0 * w);
+    a2 = w * w / (1.0 + 2.0 * w);
+    beta = (1.0 + w) / (1.0 + 2.0 * w);
   }
   if (a2 != 0.0) {
     ws.x_hat = a1 * state.x - a2 * state.x_prev;
@@ -75,6 +73,9 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
   report.round_off_stop = out.round_off_stop;
   report.dt = h;
   // Commit.
+  state.x_prev2.swap(state.x_prev);
+  state.v_prev2.swap(state.v_prev);
+  state.h_prev2 = state.h_prev;
   state.x_prev.swap(state.x);
   state.v_prev.swap(state.v);
   state.x = ws.x;
@@ -86,6 +87,10 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
 
 }  // namespace
 
+int step_order(Scheme scheme, const State& state, double h) {
+  return scheme == Scheme::kBdf2 && state.h_prev > 0.0 && h <= kMaxBdf2StepRatio * state.h_prev ? 2 : 1;
+}
+
 StepReport step_once(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt) {
   StepReport report;
   report.ok = attempt(model, state, ws, controls, dt, report);
@@ -94,7 +99,7 @@ StepReport step_once(const Model& model, State& state, Workspace& ws, const Cont
 
 StepReport step(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt) {
   StepReport report;
-  const int retries = model.solver.adaptive ? model.solver.max_halvings : 0;
+  const int retries = model.solver.adaptive == StepControl::kOff ? 0 : model.solver.max_halvings;
   double h = dt;
   for (int k = 0; k <= retries; ++k, h *= 0.5) {
     if (attempt(model, state, ws, controls, h, report)) {

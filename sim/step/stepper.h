@@ -1,7 +1,8 @@
 // The implicit time stepper: advances a State by one step of backward Euler or BDF2, solving the
 // nonlinear step with Newton (sim/step/newton.h). The state changes only when Newton converged;
-// on failure it retries with dt/2 (SolverSpec::adaptive, on by default) and otherwise returns a
-// report with the reason and the state untouched. It never touches files.
+// on failure it retries with dt/2 (unless SolverSpec::adaptive is kOff) and otherwise returns a
+// report with the reason and the state untouched. It never touches files. Whether a converged
+// step is accurate enough is the caller's question (sim/step/local_error.h, the run loop).
 //
 // Schemes, for M a = F(x, v) written as a first-order system (x' = v, M v' = F):
 //   backward Euler: x1 = x0 + h v1,                     M (v1 - v0) = h F(x1, v1)
@@ -32,6 +33,14 @@ struct StepReport {
   bool round_off_stop = false; // converged because the update fell below round-off
   std::string failure;         // when !ok: what went wrong, at what time and dt
 };
+
+// BDF2 steps no more than this many times longer than the previous one (zero-stability needs
+// less than 1 + sqrt 2); a longer step is taken with backward Euler.
+inline constexpr double kMaxBdf2StepRatio = 2.0;
+
+// The order of the scheme a step of h from `state` uses: 2 for BDF2 with a previous step at most
+// kMaxBdf2StepRatio times shorter, else 1 (backward Euler, also BDF2's first step).
+int step_order(Scheme scheme, const State& state, double h);
 
 // One step of at most `dt` seconds from state.t, with `controls` held over the step.
 StepReport step(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt);

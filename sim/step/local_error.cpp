@@ -1,0 +1,67 @@
+#include "sim/step/local_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vascsim {
+
+namespace {
+
+// Lagrange weights of the points at 0, -h1, -(h1 + h2) (y_n, y_{n-1}, y_{n-2}) for the value at +h.
+struct Predictor {
+  double c0 = 0, c1 = 0, c2 = 0;
+};
+
+Predictor quadratic(double h, double h1, double h2) {
+  return {(h + h1) * (h + h1 + h2) / (h1 * (h1 + h2)), -h * (h + h1 + h2) / (h1 * h2), h * (h + h1) / ((h1 + h2) * h2)};
+}
+
+Predictor linear(double h, double h1) { return {(h + h1) / h1, -h / h1, 0.0}; }
+
+}  // namespace
+
+LocalError local_error(const State& before, const State& after, int order, const std::vector<char>& fixed,
+                       const LocalErrorWeights& weights) {
+  const double h = after.t - before.t, h1 = before.h_prev, h2 = before.h_prev2;
+  Predictor p;
+  double share;  // the step's error as a fraction of (solution - prediction)
+  if (order == 2) {
+    if (!(h1 > 0 && h2 > 0)) return {-1.0, -1.0};
+    p = quadratic(h, h1, h2);
+    // Leading errors (docs/solver.md): BDF2 e = A y'''/6, predictor -B y'''/6 with
+    // A = h^3 (1 + w)^2 / (w (1 + 2w)), w = h / h1, and B = h (h + h1) (h + h1 + h2).
+    const double w = h / h1;
+    const double a = h * h * h * (1 + w) * (1 + w) / (w * (1 + 2 * w));
+    const double b = h * (h + h1) * (h + h1 + h2);
+    share = a / (a + b);
+  } else {
+    if (!(h1 > 0)) return {-1.0, -1.0};
+    p = linear(h, h1);
+    // Backward Euler e = h^2 y''/2, the linear predictor's -h (h + h1) y''/2.
+    share = h / (2 * h + h1);
+  }
+  const Eigen::Index n = after.x.size();
+  double speed = weights.speed;
+  for (Eigen::Index i = 0; i < n; ++i) speed = std::max({speed, std::abs(before.v[i]), std::abs(after.v[i])});
+  const double scale_x = weights.atol_position + weights.rtol * weights.length;
+  // Velocities come from difference quotients, v = (x - x_hat) / (beta h), whose round-off grows
+  // as the step shrinks: no estimate can be asked to go below it (and chasing it would shrink the
+  // step to dt_min at any sharp event).
+  const double round_off_v = 16 * std::numeric_limits<double>::epsilon() * after.x.lpNorm<Eigen::Infinity>() / h;
+  const double scale_v = weights.atol_velocity + weights.rtol * speed + round_off_v;
+  const auto predicted = [&](const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, const Eigen::VectorXd& y2,
+                             Eigen::Index i) { return p.c0 * y0[i] + p.c1 * y1[i] + (p.c2 != 0 ? p.c2 * y2[i] : 0.0); };
+  LocalError worst;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (fixed[static_cast<std::size_t>(i)]) continue;
+    const double ex = share * std::abs(after.x[i] - predicted(before.x, before.x_prev, before.x_prev2, i));
+    const double ev = share * std::abs(after.v[i] - predicted(before.v, before.v_prev, before.v_prev2, i));
+    // A zero scale (rtol and that quantity's atol both 0) leaves the quantity uncontrolled.
+    if (scale_x > 0) worst.position = std::max(worst.position, ex / scale_x);
+    if (scale_v > 0) worst.velocity = std::max(worst.velocity, ev / scale_v);
+  }
+  return worst;
+}
+
+}  // namespace vascsim
