@@ -16,6 +16,7 @@
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
 #include "sim/run/compile.h"
+#include "sim/run/run.h"
 #include "sim/scene/input_error.h"
 #include "sim/step/model.h"
 #include "sim/step/statics.h"
@@ -59,14 +60,18 @@ Scene cantilever(int nodes, Scheme scheme, double dt, double rel_tol, double p) 
   return s;
 }
 
-Row dynamic_row(int nodes, Scheme scheme, double dt, double rel_tol, double duration) {
-  const RodSpec rod;
-  const double ro2 = rod.outer_radius * rod.outer_radius, ri2 = rod.inner_radius * rod.inner_radius;
-  const double ei = rod.youngs_modulus * M_PI * (ro2 * ro2 - ri2 * ri2) / 4, l = rod.length;
-  const double rho_a = rod.density * M_PI * (ro2 - ri2);
-  const double p = 0.01 * ei / (l * l);
-  const double y_static = p * l * l * l / (3 * ei);
-  auto exact = [&](double t) {
+// The dynamic problem's load and its exact tip deflection (modal superposition, 40 modes).
+struct StepLoadReference {
+  double p = 0.0, y_static = 0.0, ei = 0.0, l = 0.0, rho_a = 0.0;
+  StepLoadReference() {
+    const RodSpec rod;
+    const double ro2 = rod.outer_radius * rod.outer_radius, ri2 = rod.inner_radius * rod.inner_radius;
+    ei = rod.youngs_modulus * M_PI * (ro2 * ro2 - ri2 * ri2) / 4, l = rod.length;
+    rho_a = rod.density * M_PI * (ro2 - ri2);
+    p = 0.01 * ei / (l * l);
+    y_static = p * l * l * l / (3 * ei);
+  }
+  double tip(double t) const {
     double y = 0.0;
     for (int n = 0; n < 40; ++n) {
       const double b = beta_l(n);
@@ -74,7 +79,13 @@ Row dynamic_row(int nodes, Scheme scheme, double dt, double rel_tol, double dura
       y += 4 * p * l * l * l / (ei * std::pow(b, 4)) * (1 - std::cos(w * t));
     }
     return -y;
-  };
+  }
+};
+
+Row dynamic_row(int nodes, Scheme scheme, double dt, double rel_tol, double duration) {
+  const StepLoadReference ref;
+  const double p = ref.p, y_static = ref.y_static;
+  auto exact = [&](double t) { return ref.tip(t); };
   Row row;
   row.problem = "cantilever_step_load";
   row.scheme = scheme == Scheme::kBdf2 ? "bdf2" : "backward_euler";
@@ -101,6 +112,43 @@ Row dynamic_row(int nodes, Scheme scheme, double dt, double rel_tol, double dura
   }
   row.wall_time = std::chrono::duration<double>(Clock::now() - start).count();
   row.iterations = static_cast<double>(iterations) / steps;
+  return row;
+}
+
+// The same problem with error-controlled steps (solver.adaptive "error", rtol), run through Run so
+// that the step-size controller, output cuts and statistics are the product's. "dt" is the mean
+// step taken.
+Row adaptive_row(int nodes, Scheme scheme, double rtol, double rel_tol, double duration) {
+  const StepLoadReference ref;
+  Scene scene = cantilever(nodes, scheme, 1e-4, rel_tol, ref.p);
+  scene.solver.adaptive = StepControl::kError;
+  scene.solver.rtol = rtol;
+  scene.run.duration = duration;
+  scene.run.output_interval = 0.1;
+  Row row;
+  row.problem = "cantilever_step_load";
+  char name[64];
+  std::snprintf(name, sizeof name, "%s/err %.0e", scheme == Scheme::kBdf2 ? "bdf2" : "backward_euler", rtol);
+  row.scheme = name;
+  row.nodes = nodes;
+  row.rel_tol = rel_tol;
+  struct TipError : FrameSink {
+    const StepLoadReference* ref;
+    int tip_y;
+    double worst = 0.0;
+    void write(double t, const std::vector<double>& values) override {
+      worst = std::max(worst, std::abs(values[static_cast<std::size_t>(tip_y)] - ref->tip(t)) / ref->y_static);
+    }
+  } sink;
+  sink.ref = &ref;
+  sink.tip_y = 2 * nodes - 1;  // position is the first channel
+  Run run(compile(scene));
+  row.ok = run.run(sink);
+  const RunStatistics& s = run.statistics();
+  row.error = sink.worst;
+  row.wall_time = s.wall_time;
+  row.dt = s.steps ? s.simulated_time / s.steps : 0.0;
+  row.iterations = s.steps ? static_cast<double>(s.newton_iterations) / s.steps : 0.0;
   return row;
 }
 
@@ -172,6 +220,12 @@ int run_bench_accuracy(int argc, char** argv) {
           rows.push_back(dynamic_row(n, scheme, dt, tol, quick ? 0.5 : duration));
           print_row(rows.back());
         }
+  for (Scheme scheme : {Scheme::kBackwardEuler, Scheme::kBdf2})
+    for (int n : node_counts)
+      for (double rtol : quick ? std::vector<double>{1e-4} : std::vector<double>{1e-3, 1e-4, 1e-5, 1e-6}) {
+        rows.push_back(adaptive_row(n, scheme, rtol, 1e-6, quick ? 0.5 : duration));
+        print_row(rows.back());
+      }
   for (int n : quick ? std::vector<int>{11, 21} : std::vector<int>{11, 21, 41, 81, 161}) {
     rows.push_back(static_row(n, 1e-10));
     print_row(rows.back());
@@ -191,6 +245,25 @@ int run_bench_accuracy(int argc, char** argv) {
       best = r.error;
       print_row(r);
     }
+
+  // Error control against fixed steps: for each error-controlled run, the fastest fixed-step run
+  // (same N) that is at least as accurate, and how much longer it takes.
+  std::printf("\nError control against the best fixed step of equal or smaller error (same N):\n");
+  std::printf("%-24s %6s %11s %11s   %-28s %11s %8s\n", "controlled", "N", "error", "wall [s]", "best fixed (scheme, dt)",
+              "wall [s]", "speedup");
+  for (const auto& a : dynamic) {
+    if (a.scheme.find("/err") == std::string::npos) continue;
+    const Row* best_fixed = nullptr;
+    for (const auto& f : dynamic)
+      if (f.scheme.find("/err") == std::string::npos && f.nodes == a.nodes && f.error <= a.error &&
+          (!best_fixed || f.wall_time < best_fixed->wall_time))
+        best_fixed = &f;
+    char fixed[64] = "none as accurate";
+    if (best_fixed) std::snprintf(fixed, sizeof fixed, "%s, %.2g", best_fixed->scheme.c_str(), best_fixed->dt);
+    std::printf("%-24s %6d %11.3e %11.4f   %-28s %11s %8s\n", a.scheme.c_str(), a.nodes, a.error, a.wall_time, fixed,
+                best_fixed ? std::to_string(best_fixed->wall_time).substr(0, 7).c_str() : "-",
+                best_fixed ? (std::to_string(best_fixed->wall_time / a.wall_time).substr(0, 5) + "x").c_str() : "-");
+  }
 
   std::ofstream out(csv);
   if (!out) throw InputError(csv + ": cannot write CSV");
