@@ -43,13 +43,13 @@ TEST(SceneRoundTrip, CanonicalTextOfEveryShippedSceneReadsBackUnchanged) {
 // point (found by the fuzz harness: tests/fuzz/regressions/scene/direction_renormalised.json).
 TEST(SceneRoundTrip, UnitDirectionIsAFixedPoint) {
   const Scene scene = read_scene_text(
-      R"({"maze": null, "control": {"disturbance": {"direction": [0.7071067811862738, 0.7071067811865476]}}})",
+      R"({"control": {"disturbance": {"direction": [0.7071067811862738, 0.7071067811865476]}}})",
       "direction.json");
   const std::string once = scene_to_json(scene);
   EXPECT_EQ(reread(once, "direction.json"), once);
   EXPECT_NEAR(scene.control.disturbance.direction.norm(), 1.0, 1e-15);
   // A direction that is not of unit length is still normalised.
-  EXPECT_EQ(read_scene_text(R"({"maze": null, "control": {"disturbance": {"direction": [3, 4]}}})", "d.json")
+  EXPECT_EQ(read_scene_text(R"({"control": {"disturbance": {"direction": [3, 4]}}})", "d.json")
                 .control.disturbance.direction,
             Vec2(0.6, 0.8));
 }

@@ -20,10 +20,9 @@ const char* const kScene = R"({
   "format": "vascsim-scene/1",
   "name": "tiny",
   "maze": null,
-  "rod": {"nodes": 5, "length": 0.1},
-  "control": {"kp": 4.0},
+  "rod": {"nodes": 5, "length": 0.1, "density": 1000},
   "solver": {"preset": "fast"},
-  "loads": {"point": [{"node": 4, "force": [0, 1e-4]}]},
+  "loads": {"damping": {"enabled": true, "coefficient": 4.0}, "point": [{"node": 4, "force": [0, 1e-4]}]},
   "run": {"duration": 0.01}
 })";
 
@@ -54,8 +53,8 @@ std::string sweep_with_axes(const std::string& axes, const std::string& extra = 
 }
 
 TEST(SweepSpec, ProductRunsTheFirstAxisSlowestInTheOrderWritten) {
-  // "/rod/nodes" sorts after "/control/kp" alphabetically; written first, it varies slowest.
-  const SweepPlan plan = plan_of(sweep_with_axes(R"({"/rod/nodes": [5, 7], "/control/kp": [2, 4, 8]})"));
+  // "/rod/nodes" sorts after "/loads/damping/coefficient" alphabetically; written first, it varies slowest.
+  const SweepPlan plan = plan_of(sweep_with_axes(R"({"/rod/nodes": [5, 7], "/loads/damping/coefficient": [2, 4, 8]})"));
   ASSERT_EQ(plan.runs.size(), 6u);
   ASSERT_EQ(plan.spec.axes.size(), 2u);
   EXPECT_EQ(plan.spec.axes[0].pointer, "/rod/nodes");
@@ -67,19 +66,19 @@ TEST(SweepSpec, ProductRunsTheFirstAxisSlowestInTheOrderWritten) {
     EXPECT_EQ(plan.runs[i].values[1], expected[i][1]);
     const Scene s = read_scene_text(plan.runs[i].scene_json, "run");
     EXPECT_EQ(s.rod.nodes, std::stoi(expected[i][0]));
-    EXPECT_DOUBLE_EQ(s.control.kp, std::stod(expected[i][1]));
+    EXPECT_DOUBLE_EQ(s.loads.damping.coefficient, std::stod(expected[i][1]));
     EXPECT_EQ(s.solver.preset, "fast");  // the rest of the scene as written
   }
 }
 
 TEST(SweepSpec, ZipPairsTheValuesAndRefusesUnequalLengths) {
-  const SweepPlan plan = plan_of(sweep_with_axes(R"({"/control/kp": [2, 4], "/control/kd": [0.1, 0.2]})",
+  const SweepPlan plan = plan_of(sweep_with_axes(R"({"/loads/damping/coefficient": [2, 4], "/rod/density": [0.1, 0.2]})",
                                                  R"(, "combine": "zip")"));
   ASSERT_EQ(plan.runs.size(), 2u);
   EXPECT_EQ(plan.runs[1].values[0], "4");
   EXPECT_EQ(plan.runs[1].values[1], "0.2");
-  expect_error(sweep_with_axes(R"({"/control/kp": [2, 4], "/control/kd": [0.1, 0.2, 0.3]})", R"(, "combine": "zip")"),
-               "/axes/~1control~1kd: expected 2 values (as many as /control/kp");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [2, 4], "/rod/density": [0.1, 0.2, 0.3]})", R"(, "combine": "zip")"),
+               "/axes/~1rod~1density: expected 2 values (as many as /loads/damping/coefficient");
 }
 
 TEST(SweepSpec, RangesGiveIntegersStepsCountsAndLogScales) {
@@ -94,7 +93,7 @@ TEST(SweepSpec, RangesGiveIntegersStepsCountsAndLogScales) {
 }
 
 TEST(SweepSpec, RepeatsAreTheOuterLoop) {
-  const SweepPlan plan = plan_of(sweep_with_axes(R"({"/control/kp": [2, 4]})", R"(, "repeats": 3)"));
+  const SweepPlan plan = plan_of(sweep_with_axes(R"({"/loads/damping/coefficient": [2, 4]})", R"(, "repeats": 3)"));
   ASSERT_EQ(plan.runs.size(), 6u);
   EXPECT_EQ(plan.runs[2].repeat, 1);
   EXPECT_EQ(plan.runs[2].values[0], "2");
@@ -113,22 +112,22 @@ TEST(SweepSpec, FixedOverridesApplyToEveryRunAndDefaultsCanBeSwept) {
     EXPECT_EQ(s.solver.preset, "fast");
   }
   EXPECT_DOUBLE_EQ(read_scene_text(plan.runs[1].scene_json, "run").solver.dt, 5e-4);
-  expect_error(sweep_with_axes(R"({"/control/kp": [1]})", R"(, "overrides": {"/control/kp": 2})"),
-               "/overrides/~1control~1kp: /control/kp is also an axis");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [1]})", R"(, "overrides": {"/loads/damping/coefficient": 2})"),
+               "/overrides/~1loads~1damping~1coefficient: /loads/damping/coefficient is also an axis");
 }
 
 TEST(SweepSpec, APointerToNoFieldIsAnErrorNamingTheFieldsThere) {
-  expect_error(sweep_with_axes(R"({"/control/kpp": [1, 2]})"), "/axes/~1control~1kpp: the scene sweeps/tiny.json has no field /control/kpp (fields of /control: ");
-  EXPECT_NE(error_of(sweep_with_axes(R"({"/control/kpp": [1, 2]})")).find("kp"), std::string::npos);
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficientp": [1, 2]})"), "/axes/~1loads~1damping~1coefficientp: the scene sweeps/tiny.json has no field /loads/damping/coefficientp (fields of /loads/damping: ");
+  EXPECT_NE(error_of(sweep_with_axes(R"({"/loads/damping/coefficientp": [1, 2]})")).find("enabled"), std::string::npos);
   expect_error(sweep_with_axes(R"({"/nothing/here": [1]})"), "has no field /nothing/here (fields of /: ");
   expect_error(sweep_with_axes(R"({"/loads/point/3/node": [1]})"), "has no field /loads/point/3/node");
   expect_error(sweep_with_axes(R"({"control/kp": [1]})"), "/axes/control~1kp: expected a JSON pointer into the scene such as \"/control/kp\"");
-  expect_error(sweep_with_axes(R"({"/control/kp": []})"), "/axes/~1control~1kp: expected a non-empty list of values or a range");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": []})"), "/axes/~1loads~1damping~1coefficient: expected a non-empty list of values or a range");
 }
 
 TEST(SweepSpec, AValueTheSceneRefusesNamesTheRunAndTheField) {
-  const std::string message = error_of(sweep_with_axes(R"({"/control/kp": [2, "fast", 4]})"));
-  EXPECT_NE(message.find("sweeps/s.json: run 0001 (/control/kp = \"fast\"): sweeps/tiny.json: /control/kp: expected a number"),
+  const std::string message = error_of(sweep_with_axes(R"({"/loads/damping/coefficient": [2, "fast", 4]})"));
+  EXPECT_NE(message.find("sweeps/s.json: run 0001 (/loads/damping/coefficient = \"fast\"): sweeps/tiny.json: /loads/damping/coefficient: expected a number"),
             std::string::npos)
       << message;
   expect_error(sweep_with_axes(R"({"/rod/nodes": [5, 2]})"), "run 0001 (/rod/nodes = 2): sweeps/tiny.json: /rod/nodes: expected an integer in [3, ");
@@ -137,24 +136,24 @@ TEST(SweepSpec, AValueTheSceneRefusesNamesTheRunAndTheField) {
 }
 
 TEST(SweepSpec, MistakesInTheFileItselfNameThePointer) {
-  expect_error(R"({"scene": "tiny.json", "axes": {"/control/kp": [1]}})", "/format: missing");
-  expect_error(R"({"format": "vascsim-sweep/2", "scene": "tiny.json", "axes": {"/control/kp": [1]}})", "/format: expected \"vascsim-sweep/1\"");
-  expect_error(R"({"format": "vascsim-sweep/1", "axes": {"/control/kp": [1]}})", "/scene: missing");
+  expect_error(R"({"scene": "tiny.json", "axes": {"/loads/damping/coefficient": [1]}})", "/format: missing");
+  expect_error(R"({"format": "vascsim-sweep/2", "scene": "tiny.json", "axes": {"/loads/damping/coefficient": [1]}})", "/format: expected \"vascsim-sweep/1\"");
+  expect_error(R"({"format": "vascsim-sweep/1", "axes": {"/loads/damping/coefficient": [1]}})", "/scene: missing");
   expect_error(sweep_with_axes("{}"), "/axes: expected an object of JSON pointers");
-  expect_error(sweep_with_axes(R"({"/control/kp": [1]})", R"(, "combine": "cross")"), "/combine: expected one of \"product\", \"zip\"");
-  expect_error(sweep_with_axes(R"({"/control/kp": [1]})", R"(, "repeat": 2)"), "/repeat: unknown key");
-  expect_error(sweep_with_axes(R"({"/control/kp": {"from": 3, "to": 1}})"), "/axes/~1control~1kp/to: expected a number >= \"from\"");
-  expect_error(sweep_with_axes(R"({"/control/kp": {"from": 3}})"), "/axes/~1control~1kp/to: missing");
-  expect_error(sweep_with_axes(R"({"/control/kp": {"from": 1, "to": 2, "stride": 1}})"), "/axes/~1control~1kp/stride: unknown key");
-  expect_error(sweep_with_axes(R"({"/control/kp": {"from": 1, "to": 2, "step": 0}})"), "/axes/~1control~1kp/step: expected a number > 0");
-  expect_error(sweep_with_axes(R"({"/control/kp": [1], "/control/kp": [2]})"), "/axes/~1control~1kp: the key appears twice");
-  expect_error(sweep_with_axes(R"({"/maze/seed": {"from": 1, "to": 1000}, "/control/kp": {"from": 1, "to": 1000}})"),
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [1]})", R"(, "combine": "cross")"), "/combine: expected one of \"product\", \"zip\"");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [1]})", R"(, "repeat": 2)"), "/repeat: unknown key");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": {"from": 3, "to": 1}})"), "/axes/~1loads~1damping~1coefficient/to: expected a number >= \"from\"");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": {"from": 3}})"), "/axes/~1loads~1damping~1coefficient/to: missing");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": {"from": 1, "to": 2, "stride": 1}})"), "/axes/~1loads~1damping~1coefficient/stride: unknown key");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": {"from": 1, "to": 2, "step": 0}})"), "/axes/~1loads~1damping~1coefficient/step: expected a number > 0");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [1], "/loads/damping/coefficient": [2]})"), "/axes/~1loads~1damping~1coefficient: the key appears twice");
+  expect_error(sweep_with_axes(R"({"/maze/seed": {"from": 1, "to": 1000}, "/loads/damping/coefficient": {"from": 1, "to": 1000}})"),
                "/axes: the sweep has 1000000 runs, more than the limit");
 }
 
 TEST(SweepSpec, TheBaseSceneIsCheckedAndNamed) {
   try {
-    expand_sweep(read_sweep_text(sweep_with_axes(R"({"/control/kp": [1]})"), "/nonexistent/s.json"));
+    expand_sweep(read_sweep_text(sweep_with_axes(R"({"/loads/damping/coefficient": [1]})"), "/nonexistent/s.json"));
     ADD_FAILURE() << "accepted a missing scene";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/s.json: /scene: /nonexistent/tiny.json: cannot open scene file"),
@@ -174,7 +173,7 @@ TEST(SweepSpec, TheBaseSceneIsCheckedAndNamed) {
 }
 
 TEST(SweepManifest, RoundTripsAndIsTheSameBytesForTheSameSweep) {
-  const std::string sweep = sweep_with_axes(R"({"/solver/preset": ["fast", "balanced"], "/control/kp": {"from": 1, "to": 3}})",
+  const std::string sweep = sweep_with_axes(R"({"/solver/preset": ["fast", "balanced"], "/loads/damping/coefficient": {"from": 1, "to": 3}})",
                                             R"(, "overrides": {"/run/duration": 0.001})");
   const std::string a = sweep_manifest_json(manifest_of(plan_of(sweep)));
   EXPECT_EQ(a, sweep_manifest_json(manifest_of(plan_of(sweep))));

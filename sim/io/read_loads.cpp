@@ -43,6 +43,16 @@ void read_loads(FieldReader& in, LoadSpec& out) {
     out.drag.tangential_coefficient = d.number("tangential_coefficient", out.drag.tangential_coefficient, 0.0, 1e3);
     d.finish();
   }
+  {
+    FieldReader m = in.object("magnet");
+    out.magnet.enabled = m.boolean("enabled", out.magnet.enabled);
+    out.magnet.moment = m.number("moment", out.magnet.moment, -1e6, 1e6);
+    out.magnet.field = m.number("field", out.magnet.field, 0.0, 1e3);
+    out.magnet.angle = m.number("angle", out.magnet.angle, -1e3, 1e3);
+    out.magnet.ramp_time = m.number("ramp_time", out.magnet.ramp_time, 0.0, 1e7);
+    out.magnet.rotation_rate = m.number("rotation_rate", out.magnet.rotation_rate, -1e6, 1e6);
+    m.finish();
+  }
   if (const json* list = in.raw("point")) {
     if (!list->is_array()) in.fail("point", "an array of objects", *list);
     out.point_loads.clear();
@@ -82,6 +92,13 @@ json write_loads(const LoadSpec& spec) {
   return {{"gravity", {{"enabled", spec.gravity.enabled}, {"acceleration", to_json(spec.gravity.acceleration)}}},
           {"damping", {{"enabled", spec.damping.enabled}, {"coefficient", spec.damping.coefficient}}},
           {"drag", drag},
+          {"magnet",
+           {{"enabled", spec.magnet.enabled},
+            {"moment", spec.magnet.moment},
+            {"field", spec.magnet.field},
+            {"angle", spec.magnet.angle},
+            {"ramp_time", spec.magnet.ramp_time},
+            {"rotation_rate", spec.magnet.rotation_rate}}},
           {"point", points}};
 }
 

@@ -49,6 +49,11 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
   if (scene.has_environment && in.has("shape"))
     in.fail("shape", "no \"shape\" in a maze or vessel scene (the rod starts at the inlet, docs/navigation.md)",
             root["shape"]);
+  // The tip controller follows the route through a maze or vessels: without one it would be
+  // silently ignored (a fixed field on a tip magnet is `loads.magnet`, which needs no route).
+  if (!scene.has_environment && in.has("control"))
+    in.fail("control", "no \"control\" in a scene without a maze or vessels (the controller follows their route)",
+            root["control"]);
   // The controller follows a trajectory in time; an equilibrium has no time to follow it in.
   if (scene.has_environment && scene.solver.mode == SolveMode::kStatic)
     in.object("solver").fail("mode", "\"dynamic\" in a maze scene (static equilibrium has no trajectory to follow)",
@@ -60,6 +65,15 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
       if (scene.loads.point_loads[i].profile != LoadProfile::kConstant)
         io::FieldReader(root["loads"]["point"][i], in.file(), "/loads/point/" + std::to_string(i))
             .fail("profile", "\"constant\" with solver mode \"static\"", root["loads"]["point"][i]["profile"]);
+  const MagnetSpec& magnet = scene.loads.magnet;
+  if (magnet.enabled && scene.solver.mode == SolveMode::kStatic && (magnet.ramp_time > 0 || magnet.rotation_rate != 0))
+    io::FieldReader(root["loads"]["magnet"], in.file(), "/loads/magnet")
+        .fail(magnet.ramp_time > 0 ? "ramp_time" : "rotation_rate", "0 with solver mode \"static\" (it solves under the field at t = 0)",
+              root["loads"]["magnet"][magnet.ramp_time > 0 ? "ramp_time" : "rotation_rate"]);
+  if (magnet.enabled && scene.has_environment && scene.control.mode == ActuationMode::kField)
+    io::FieldReader(root["loads"], in.file(), "/loads")
+        .fail("magnet", "no fixed-field magnet beside control mode \"field\" (the controller's field already turns the tip magnet)",
+              root["loads"]["magnet"]);
   in.finish();
   return scene;
 }
@@ -93,7 +107,7 @@ std::string scene_to_json(const Scene& scene) {
   root["path"] = io::write_path(scene.path);
   root["rod"] = io::write_rod(scene.rod);
   root["run"] = io::write_run(scene.run);
-  root["control"] = io::write_control(scene.control);
+  if (scene.has_environment) root["control"] = io::write_control(scene.control);
   root["contact"] = io::write_contact(scene.contact);
   // A maze or vessel run places the rod at the inlet, and the reader refuses a "shape" there:
   // writing one would make the canonical text (stored in every log) unreadable as a scene.

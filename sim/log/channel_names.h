@@ -15,6 +15,7 @@ inline constexpr const char* kFrictionForce = "force/friction";   // node vector
 inline constexpr const char* kDragForce = "force/drag";           // node vectors, N
 inline constexpr const char* kDampingForce = "force/damping";     // node vectors, N (viscous damping)
 inline constexpr const char* kExternalForce = "force/external";   // node vectors, N (point loads, gravity)
+inline constexpr const char* kMagnetForce = "force/magnet";       // node vectors, N (a tip magnet in the scene's fixed field)
 inline constexpr const char* kTipReference = "tip/reference";     // vector, m (controller's target)
 inline constexpr const char* kTipError = "tip/error";             // scalar, m (|tip - reference|)
 }  // namespace channel

@@ -42,6 +42,21 @@ class PointLoadModule : public ForceModule {
   int nodes_;
 };
 
+// A magnet on the distal edge in the scene's uniform field (MagnetSpec): the Zeeman energy
+// -m B . t of sim/control/tip_magnet_energy.h, t the edge's unit direction, as a couple on the
+// last two nodes with its exact Hessian. The field scales with load_scale in statics.
+// Channel force/magnet.
+class MagnetLoadModule : public ForceModule {
+ public:
+  MagnetLoadModule(int nodes, const MagnetSpec& spec) : nodes_(nodes), spec_(spec) {}
+  std::string channel() const override { return channel::kMagnetForce; }
+  void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
+
+ private:
+  int nodes_;
+  MagnetSpec spec_;
+};
+
 // Viscous damping f_i = -c dl_i v_i; K += c dl_i dv_dx I. Channel force/damping.
 class ViscousDampingModule : public ForceModule {
  public:

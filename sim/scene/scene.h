@@ -5,6 +5,9 @@
 // All quantities are SI.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -176,11 +179,31 @@ struct DragSpec {
   double tangential_coefficient = 0.05;
   DragArea area = DragArea::kNodes;
 };
+// A magnet on the distal edge in a uniform field set by the scene, with no controller: the basic
+// experiment of magnetic-rod papers (tip angle against field angle and strength). The field has
+// strength B(t) = field * min(1, t / ramp_time) (ramp_time 0: constant) and direction
+// angle + rotation_rate * t from +x. A uniform field exerts no net force, only the torque
+// m x B on the magnet, whose moment points along the distal edge.
+struct MagnetSpec {
+  bool enabled = false;
+  double moment = 0.01;        // A m^2
+  double field = 0.01;         // T
+  double angle = 1.5707963267948966;  // rad, from +x, counter-clockwise
+  double ramp_time = 0.0;      // s
+  double rotation_rate = 0.0;  // rad/s
+  Vec2 field_at(double t) const;  // T
+};
+inline Vec2 MagnetSpec::field_at(double t) const {
+  const double strength = ramp_time > 0.0 ? field * std::min(1.0, std::max(0.0, t) / ramp_time) : field;
+  const double a = angle + rotation_rate * t;
+  return strength * Vec2(std::cos(a), std::sin(a));
+}
 struct LoadSpec {
   GravitySpec gravity;
   DampingSpec damping;
   DragSpec drag;
   std::vector<PointLoadSpec> point_loads;
+  MagnetSpec magnet;
 };
 
 // Time integration and Newton settings. A preset fills the scheme, the step control and the

@@ -81,6 +81,7 @@ Model build_model(const Scene& scene) {
   if (loads.damping.enabled && loads.damping.coefficient > 0.0)
     model.forces.push_back(std::make_unique<ViscousDampingModule>(model.rod, loads.damping.coefficient));
   if (loads.drag.enabled) model.forces.push_back(std::make_unique<QuadraticDragModule>(model.rod, loads.drag));
+  if (loads.magnet.enabled) model.forces.push_back(std::make_unique<MagnetLoadModule>(n, loads.magnet));
   return model;
 }
 
