@@ -48,7 +48,7 @@ TEST(CliRun, BadSceneExitsTwoAndWritesNothing) {
   write_text(dir + "/scene.json", R"({"control": {"mode": "magic"}})");
   const CommandResult r = run_vascsim("run " + dir + "/scene.json --out " + dir + "/out");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find(dir + "/scene.json: /control/mode: expected one of \"force\", \"kinematic\", \"field\", got \"magic\""),
+  EXPECT_NE(r.output.find(dir + "/scene.json: /control/mode: expected one of \"none\", \"force\", \"kinematic\", \"field\", got \"magic\""),
             std::string::npos)
       << r.output;
   EXPECT_FALSE(fs::exists(dir + "/out"));

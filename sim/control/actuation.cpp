@@ -61,10 +61,18 @@ class KinematicActuation : public Actuation {
   }
 };
 
+// No tip actuation: the tip goes where the body takes it (a catheter pushed from its root).
+class NoActuation : public Actuation {
+ public:
+  std::vector<std::shared_ptr<const ForceModule>> modules(int) const override { return {}; }
+  void set_controls(const TipCommand&, const ActuationStep&, Controls&) const override {}
+};
+
 }  // namespace
 
 std::shared_ptr<const Actuation> make_actuation(const ControlSpec& spec) {
   switch (spec.mode) {
+    case ActuationMode::kNone: return std::make_shared<NoActuation>();
     case ActuationMode::kForce: return std::make_shared<ForceActuation>(spec);
     case ActuationMode::kField: return std::make_shared<FieldActuation>(spec);
     case ActuationMode::kKinematic: return std::make_shared<KinematicActuation>();

@@ -36,6 +36,18 @@ void read_boundary(FieldReader& in, BoundarySpec& out) {
       out.pinned.push_back(v.get<int>());
     }
   }
+  if (const json* list = in.raw("supports")) {
+    if (!list->is_array()) in.fail("supports", "an array of objects", *list);
+    out.supports.clear();
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      FieldReader item((*list)[i], in.file(), in.pointer_of("supports/" + std::to_string(i)));
+      SupportSpec support;
+      support.node = read_node(item, "node", support.node);
+      support.axis = item.choice("hold", "y", {"x", "y"}) == "x" ? SupportAxis::kX : SupportAxis::kY;
+      item.finish();
+      out.supports.push_back(support);
+    }
+  }
   if (const json* list = in.raw("prescribed")) {
     if (!list->is_array()) in.fail("prescribed", "an array of objects", *list);
     out.prescribed.clear();
@@ -60,7 +72,9 @@ json write_boundary(const BoundarySpec& spec) {
                           {"velocity", to_json(p.velocity)},
                           {"amplitude", to_json(p.amplitude)},
                           {"frequency", p.frequency}});
-  return {{"clamp", clamp_name(spec.clamp)}, {"pinned", spec.pinned}, {"prescribed", prescribed}};
+  json supports = json::array();
+  for (const auto& s : spec.supports) supports.push_back({{"node", s.node}, {"hold", s.axis == SupportAxis::kX ? "x" : "y"}});
+  return {{"clamp", clamp_name(spec.clamp)}, {"pinned", spec.pinned}, {"supports", supports}, {"prescribed", prescribed}};
 }
 
 }  // namespace vascsim::io

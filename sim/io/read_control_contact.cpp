@@ -11,6 +11,7 @@ namespace {
 
 const char* mode_name(ActuationMode m) {
   switch (m) {
+    case ActuationMode::kNone: return "none";
     case ActuationMode::kKinematic: return "kinematic";
     case ActuationMode::kField: return "field";
     default: return "force";
@@ -25,11 +26,44 @@ const char* contact_name(ContactMode m) {
   }
 }
 
+// control.advance: {"speed": v, "start": t0, "stop": t1} (fed at v from t0 to t1), or
+// {"points": [[t, s], ...]} (the fed length s at times t, linear between them).
+void read_advance(FieldReader& control, AdvanceSpec& out) {
+  FieldReader in = control.object("advance");
+  out.points.clear();
+  if (in.has("points")) {
+    for (const char* key : {"speed", "start", "stop"})
+      if (in.has(key)) in.fail(key, "either \"points\" or \"speed\", \"start\" and \"stop\", not both", *in.raw(key));
+    const json& list = *in.raw("points");
+    if (!list.is_array() || list.size() < 2 || list.size() > 100000) in.fail("points", "an array of 2 to 100000 [t, s] pairs", list);
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const json& p = list[i];
+      const bool pair = p.is_array() && p.size() == 2 && p[0].is_number() && p[1].is_number();
+      const double t = pair ? p[0].get<double>() : NAN, s = pair ? p[1].get<double>() : NAN;
+      if (!pair || !(t >= 0.0 && t <= 1e7) || !(std::abs(s) <= 1e3) || (i > 0 && !(t > out.points.back().first)))
+        in.fail("points/" + std::to_string(i),
+                "[t, s]: t in s, >= 0 and after the previous point's, s the fed length in m (|s| <= 1000)", p);
+      out.points.emplace_back(t, s);
+    }
+  } else {
+    const double speed = in.number("speed", 0.01, -100.0, 100.0);
+    const double start = in.number("start", 0.0, 0.0, 1e7);
+    const double stop = in.number("stop", start + 1.0, 0.0, 1e7);
+    if (!(stop > start)) in.fail("stop", "a time after \"start\"", *in.raw("stop"));
+    out.points = {{start, 0.0}, {stop, speed * (stop - start)}};
+  }
+  in.finish();
+}
+
 }  // namespace
 
 void read_control(FieldReader& in, ControlSpec& out) {
-  const std::string mode = in.choice("mode", mode_name(out.mode), {"force", "kinematic", "field"});
-  out.mode = mode == "kinematic" ? ActuationMode::kKinematic : mode == "field" ? ActuationMode::kField : ActuationMode::kForce;
+  const std::string mode = in.choice("mode", mode_name(out.mode), {"none", "force", "kinematic", "field"});
+  out.mode = mode == "none"        ? ActuationMode::kNone
+             : mode == "kinematic" ? ActuationMode::kKinematic
+             : mode == "field"     ? ActuationMode::kField
+                                   : ActuationMode::kForce;
+  if (in.has("advance")) read_advance(in, out.advance);
   out.kp = in.number("kp", out.kp, 0.0, 1e9);
   out.kd = in.number("kd", out.kd, 0.0, 1e9);
   if (out.mode == ActuationMode::kKinematic && out.kp > 1.0)
@@ -57,7 +91,7 @@ void read_control(FieldReader& in, ControlSpec& out) {
 }
 
 json write_control(const ControlSpec& spec) {
-  return {{"mode", mode_name(spec.mode)},
+  json out = {{"mode", mode_name(spec.mode)},
           {"kp", spec.kp},
           {"kd", spec.kd},
           {"actuated_nodes", spec.actuated_nodes},
@@ -69,6 +103,12 @@ json write_control(const ControlSpec& spec) {
             {"amplitude", spec.disturbance.amplitude},
             {"omega", spec.disturbance.omega},
             {"direction", to_json(spec.disturbance.direction)}}}};
+  if (spec.advance.enabled()) {
+    json points = json::array();
+    for (const auto& [t, s] : spec.advance.points) points.push_back({t, s});
+    out["advance"] = {{"points", points}};
+  }
+  return out;
 }
 
 void read_contact(FieldReader& in, ContactSpec& out) {
@@ -80,6 +120,7 @@ void read_contact(FieldReader& in, ContactSpec& out) {
   out.slip_velocity = in.positive("slip_velocity", out.slip_velocity, 1e3);
   out.paper_gain = in.positive("paper_gain", out.paper_gain, 1e12);
   out.paper_iterations = static_cast<int>(in.integer("paper_iterations", out.paper_iterations, 1, 100000));
+  out.self = in.boolean("self", out.self);
   in.finish();
 }
 
@@ -90,7 +131,8 @@ json write_contact(const ContactSpec& spec) {
           {"friction", spec.friction},
           {"slip_velocity", spec.slip_velocity},
           {"paper_gain", spec.paper_gain},
-          {"paper_iterations", spec.paper_iterations}};
+          {"paper_iterations", spec.paper_iterations},
+          {"self", spec.self}};
 }
 
 }  // namespace vascsim::io

@@ -53,6 +53,20 @@ void read_loads(FieldReader& in, LoadSpec& out) {
     out.magnet.rotation_rate = m.number("rotation_rate", out.magnet.rotation_rate, -1e6, 1e6);
     m.finish();
   }
+  if (const json* list = in.raw("bodies")) {
+    if (!list->is_array()) in.fail("bodies", "an array of objects", *list);
+    out.bodies.clear();
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      FieldReader item((*list)[i], in.file(), in.pointer_of("bodies/" + std::to_string(i)));
+      BodySpec b;
+      b.node = static_cast<int>(item.integer("node", b.node, -1000000, 999999));
+      b.mass = item.number("mass", b.mass, 0.0, 1e6);
+      b.linear_drag = item.number("linear_drag", b.linear_drag, 0.0, 1e9);
+      b.quadratic_drag = item.number("quadratic_drag", b.quadratic_drag, 0.0, 1e9);
+      item.finish();
+      out.bodies.push_back(b);
+    }
+  }
   if (const json* list = in.raw("point")) {
     if (!list->is_array()) in.fail("point", "an array of objects", *list);
     out.point_loads.clear();
@@ -84,6 +98,9 @@ json write_loads(const LoadSpec& spec) {
                       {"ramp_time", p.ramp_time},
                       {"frequency", p.frequency},
                       {"phase", p.phase}});
+  json bodies = json::array();
+  for (const auto& b : spec.bodies)
+    bodies.push_back({{"node", b.node}, {"mass", b.mass}, {"linear_drag", b.linear_drag}, {"quadratic_drag", b.quadratic_drag}});
   json drag = {{"enabled", spec.drag.enabled},
                {"fluid_density", spec.drag.fluid_density},
                {"drag_coefficient", spec.drag.drag_coefficient},
@@ -99,6 +116,7 @@ json write_loads(const LoadSpec& spec) {
             {"angle", spec.magnet.angle},
             {"ramp_time", spec.magnet.ramp_time},
             {"rotation_rate", spec.magnet.rotation_rate}}},
+          {"bodies", bodies},
           {"point", points}};
 }
 

@@ -72,6 +72,10 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                        {"contact_time_per_node", contact_time},
                        {"paper_contact_iterations_max", s.paper_contact_iterations_max},
                        {"trajectory_duration", run.navigation()->trajectory->duration()}};
+    if (scene.control.advance.enabled())
+      j["navigation"]["advance"] = {{"fed_length", scene.control.advance.fed_length(s.simulated_time) - scene.control.advance.fed_length(0.0)},
+                                    {"feed_force_max", s.feed_force_max},
+                                    {"feed_force_mean", s.feed_force_mean}};
   }
   return j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n";  // a scene file name need not be UTF-8
 }

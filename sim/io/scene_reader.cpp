@@ -65,6 +65,10 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
       if (scene.loads.point_loads[i].profile != LoadProfile::kConstant)
         io::FieldReader(root["loads"]["point"][i], in.file(), "/loads/point/" + std::to_string(i))
             .fail("profile", "\"constant\" with solver mode \"static\"", root["loads"]["point"][i]["profile"]);
+  // The static solver factorises the band only; self-contact's entries lie beyond it.
+  if (scene.contact.self && scene.solver.mode == SolveMode::kStatic)
+    in.object("contact").fail("self", "false with solver mode \"static\" (self-contact needs the dynamic solver)",
+                              root["contact"]["self"]);
   const MagnetSpec& magnet = scene.loads.magnet;
   if (magnet.enabled && scene.solver.mode == SolveMode::kStatic && (magnet.ramp_time > 0 || magnet.rotation_rate != 0))
     io::FieldReader(root["loads"]["magnet"], in.file(), "/loads/magnet")

@@ -18,6 +18,8 @@ inline constexpr const char* kExternalForce = "force/external";   // node vector
 inline constexpr const char* kMagnetForce = "force/magnet";       // node vectors, N (a tip magnet in the scene's fixed field)
 inline constexpr const char* kTipReference = "tip/reference";     // vector, m (controller's target)
 inline constexpr const char* kTipError = "tip/error";             // scalar, m (|tip - reference|)
+inline constexpr const char* kFeedForce = "feed/force";           // scalar, N (control.advance: the drive's push along the inlet)
+inline constexpr const char* kFeedLength = "feed/length";         // scalar, m (control.advance: the length fed so far)
 }  // namespace channel
 
 }  // namespace vascsim

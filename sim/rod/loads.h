@@ -57,6 +57,19 @@ class MagnetLoadModule : public ForceModule {
   MagnetSpec spec_;
 };
 
+// The drag of lumped bodies (BodySpec) on their nodes, f = -c1 v - c2 |v| v, with the velocity
+// Jacobian -df/dv = c1 I + c2 (|v| I + v v^T / |v|) mapped through dv/dx. Channel force/drag.
+// (The bodies' mass is added to the rod's lumped masses when the Model is built.)
+class BodyDragModule : public ForceModule {
+ public:
+  BodyDragModule(int nodes, const std::vector<BodySpec>& bodies);
+  std::string channel() const override { return channel::kDragForce; }
+  void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
+
+ private:
+  std::vector<BodySpec> bodies_;  // node indices resolved to 0..N-1
+};
+
 // Viscous damping f_i = -c dl_i v_i; K += c dl_i dv_dx I. Channel force/damping.
 class ViscousDampingModule : public ForceModule {
  public:

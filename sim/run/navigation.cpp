@@ -102,6 +102,21 @@ void add_navigation_modules(const Scene& scene, Navigation& nav, Model& model) {
   if (scene.loads.drag.enabled)
     nav.plant.drag_coefficient = QuadraticDragModule(model.rod, scene.loads.drag).tangential_coefficients()[n - 1];
 
+  if (scene.control.advance.enabled()) {
+    // The drive grips the rod's first two nodes and moves them along the inlet.
+    for (const auto& c : model.constraints)
+      if (c.node <= 1)
+        throw InputError(label_of(scene) + ": /control/advance: the drive holds nodes 0 and 1, and the boundary already constrains node " +
+                         std::to_string(c.node));
+    for (int node : {0, 1}) {
+      NodeConstraint c;
+      c.node = node;
+      c.origin = model.rod.x_initial.segment<2>(2 * node);
+      c.feed = scene.control.advance;
+      c.feed_direction = nav.environment.inlet.inward;
+      model.constraints.push_back(c);
+    }
+  }
   nav.actuation = make_actuation(scene.control);
   for (auto& module : nav.actuation->modules(n)) model.forces.push_back(std::move(module));
   if (scene.control.disturbance.amplitude > 0.0 && scene.control.disturbance.kind == DisturbanceKind::kForce) {

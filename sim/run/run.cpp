@@ -38,9 +38,13 @@ Run::Run(std::shared_ptr<const Model> model)
     stats_.contact_time.assign(static_cast<std::size_t>(n), 0.0);
     // A step ends 1 ns before each jump: forces are evaluated at the step's end, which must still
     // see the values before it; the next step, starting afresh, sees those after.
-    if (step_size_)
+    if (step_size_) {
       for (const double b : navigation_->trajectory->breakpoints())
         if (b + scene_.control.lead_time > 2e-9) breakpoints_.push_back(b + scene_.control.lead_time - 1e-9);
+      for (const auto& point : scene_.control.advance.points)  // the feed's speed jumps there
+        if (point.first > 2e-9) breakpoints_.push_back(point.first - 1e-9);
+      std::sort(breakpoints_.begin(), breakpoints_.end());
+    }
   }
   const std::uint32_t node_values = static_cast<std::uint32_t>(2 * n);
   channels_.push_back({channel::kPosition, "m", ChannelLayout::kNodeVectors, node_values});
@@ -53,6 +57,10 @@ Run::Run(std::shared_ptr<const Model> model)
   if (navigation_) {
     channels_.push_back({channel::kTipReference, "m", ChannelLayout::kVector, 2});
     channels_.push_back({channel::kTipError, "m", ChannelLayout::kScalars, 1});
+    if (scene_.control.advance.enabled()) {
+      channels_.push_back({channel::kFeedForce, "N", ChannelLayout::kScalars, 1});
+      channels_.push_back({channel::kFeedLength, "m", ChannelLayout::kScalars, 1});
+    }
   }
 }
 
@@ -187,9 +195,22 @@ Eigen::VectorXd Run::logged_force(const std::string& name, const Controls& contr
   return f;
 }
 
+double Run::feed_force() const {
+  // The reactions of the last solve, which is the committed step's: the force the drive's two
+  // held nodes exert on the rod, along the inlet (positive: pushing the rod in).
+  const Vec2 inward = navigation_->environment.inlet.inward;
+  return (workspace_.reaction.segment<2>(0) + workspace_.reaction.segment<2>(2)).dot(inward);
+}
+
 void Run::update_statistics(double dt, const Controls& controls) {
   stats_.simulated_time = state_.t;
   if (!navigation_) return;
+  if (scene_.control.advance.enabled()) {
+    const double f = feed_force();
+    stats_.feed_force_max = std::max(stats_.feed_force_max, std::abs(f));
+    feed_impulse_ += std::abs(f) * dt;
+    stats_.feed_force_mean = feed_impulse_ / std::max(state_.t, 1e-300);
+  }
   const int n = model_->nodes();
   const Vec2 tip = state_.position(n - 1);
   const double error = (navigation_->trajectory->position(controller_->reference_time(state_.t)) - tip).norm();
@@ -235,6 +256,10 @@ void Run::record(FrameSink& sink) {
     values.push_back(reference.x());
     values.push_back(reference.y());
     values.push_back((reference - state_.position(model_->nodes() - 1)).norm());
+    if (scene_.control.advance.enabled()) {
+      values.push_back(feed_force());
+      values.push_back(scene_.control.advance.fed_length(state_.t) - scene_.control.advance.fed_length(0.0));
+    }
   }
   sink.write(state_.t, values);
   ++stats_.frames;

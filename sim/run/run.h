@@ -69,6 +69,8 @@ struct RunStatistics {
   double tip_error_max = 0.0;        // m
   double actuation_force_max = 0.0;  // N, |magnetic force| on the tip
   double actuation_force_mean = 0.0; // N
+  double feed_force_max = 0.0;       // N, control.advance: |the drive's push along the inlet|
+  double feed_force_mean = 0.0;      // N, its time average
   double contact_force_max = 0.0;    // N, largest per-node wall force
   double min_gap = std::numeric_limits<double>::infinity();  // m, rod surface to wall surface
   double max_penetration = 0.0;      // m, max(0, -min_gap)
@@ -111,6 +113,7 @@ class Run {
   bool solve_equilibrium(FrameSink& sink);
   void record(FrameSink& sink);
   void update_statistics(double dt, const Controls& controls);
+  double feed_force() const;  // N, control.advance
   // The force of every module writing channel `name`, at the committed state.
   Eigen::VectorXd channel_force(const std::string& name, const Controls& controls) const;
   // What the log and the statistics report for channel `name`: the modules' force, with the
@@ -135,6 +138,7 @@ class Run {
   RunStatistics stats_;
   double error_square_time_ = 0.0;                   // m^2 s
   double actuation_time_ = 0.0;                      // N s
+  double feed_impulse_ = 0.0;                        // N s
 };
 
 }  // namespace vascsim

@@ -133,9 +133,17 @@ struct PrescribedMotionSpec {
   Vec2 amplitude = Vec2::Zero();  // m
   double frequency = 0.0;         // Hz
 };
+// A node held in one coordinate at its initial value, free in the other: a roller on a
+// horizontal guide holds y (axis kY), a slider in a vertical slot holds x (axis kX).
+enum class SupportAxis { kX, kY };
+struct SupportSpec {
+  int node = -1;
+  SupportAxis axis = SupportAxis::kY;  // the coordinate held
+};
 struct BoundarySpec {
   ClampKind clamp = ClampKind::kNone;
   std::vector<int> pinned;  // nodes held at their initial position (free to rotate)
+  std::vector<SupportSpec> supports;
   std::vector<PrescribedMotionSpec> prescribed;
 };
 
@@ -198,12 +206,22 @@ inline Vec2 MagnetSpec::field_at(double t) const {
   const double a = angle + rotation_rate * t;
   return strength * Vec2(std::cos(a), std::sin(a));
 }
+// A lumped body on a node: extra mass (e.g. the tip magnet's) with its own drag, linear
+// (Stokes: a bead in a viscous fluid, 6 pi mu r) and/or quadratic (1/2 rho Cd A at higher
+// Reynolds numbers): f = -linear_drag v - quadratic_drag |v| v. Its mass also feels gravity.
+struct BodySpec {
+  int node = -1;
+  double mass = 0.0;            // kg
+  double linear_drag = 0.0;     // N s/m
+  double quadratic_drag = 0.0;  // kg/m
+};
 struct LoadSpec {
   GravitySpec gravity;
   DampingSpec damping;
   DragSpec drag;
   std::vector<PointLoadSpec> point_loads;
   MagnetSpec magnet;
+  std::vector<BodySpec> bodies;
 };
 
 // Time integration and Newton settings. A preset fills the scheme, the step control and the
@@ -254,6 +272,7 @@ inline bool apply_solver_preset(const std::string& name, SolverSpec& s) {
 // Tip actuation and trajectory following (paper II.C, III.A-B, Algorithm 1). The tip is the last
 // rod node; the controller acts only in scenes with a maze.
 enum class ActuationMode {
+  kNone,       // no tip actuation (a catheter only pushed from its root: control.advance)
   kForce,      // default: magnetic force = feedforward + PD on the tip node(s); the tip moves by dynamics
   kKinematic,  // the paper: the controller's output position is imposed on the tip node
   kField,      // a tip magnet in a uniform field: the field turns the tip (torque m x B), its gradient pulls
@@ -266,8 +285,36 @@ struct DisturbanceSpec {
   double omega = 5.0;                              // rad/s
   Vec2 direction = Vec2(0.7071067811865476, 0.7071067811865476);  // unit vector
 };
+// Proximal advancement, as a catheter drive feeds the rod through the inlet: its first two nodes
+// are held and moved along the inlet's direction by the fed length s(t), piecewise linear
+// through `points` (t in s, strictly increasing; s in m), constant before the first and after
+// the last. The drive's axial force on the rod is logged (feed/force) and summarised.
+struct AdvanceSpec {
+  std::vector<std::pair<double, double>> points;  // (s, m)
+  bool enabled() const { return !points.empty(); }
+  double fed_length(double t) const;  // m
+  double speed(double t) const;       // m/s, ds/dt (the right-hand one at a corner)
+};
+inline double AdvanceSpec::fed_length(double t) const {
+  if (points.empty()) return 0.0;
+  if (t <= points.front().first) return points.front().second;
+  for (std::size_t k = 1; k < points.size(); ++k)
+    if (t < points[k].first) {
+      const auto& [t0, s0] = points[k - 1];
+      const auto& [t1, s1] = points[k];
+      return s0 + (s1 - s0) * (t - t0) / (t1 - t0);
+    }
+  return points.back().second;
+}
+inline double AdvanceSpec::speed(double t) const {
+  for (std::size_t k = 1; k < points.size(); ++k)
+    if (t >= points[k - 1].first && t < points[k].first)
+      return (points[k].second - points[k - 1].second) / (points[k].first - points[k - 1].first);
+  return 0.0;
+}
 struct ControlSpec {
   ActuationMode mode = ActuationMode::kForce;
+  AdvanceSpec advance;
   double kp = 4.0;               // force mode: N/m; kinematic mode: - (fraction of the error corrected)
   double kd = 0.4;               // force mode: N s/m; kinematic mode: s
   int actuated_nodes = 1;        // 1..3: force spread over this many nodes from the tip (the magnet's length)
@@ -291,6 +338,7 @@ struct ContactSpec {
   double slip_velocity = 1e-4;       // m/s, friction regularisation: below it friction grows linearly
   double paper_gain = 50.0;          // N/m, K_f of the paper's penalty, per iteration
   int paper_iterations = 50;         // cap on the paper's push-out iterations per step
+  bool self = false;                 // rod self-contact (implicit barrier between distant edges), any scene
 };
 
 // Output of a run.

@@ -6,7 +6,10 @@
 // the time scheme implies, v = (x - x_hat) * dv_dx. The module adds its force F (N) into `force`
 // and, when `stiffness` is not null, its contribution to the Newton matrix:
 //     K += -(dF/dx + dv_dx * dF/dv)
-// which must be symmetric and stay within BandedMatrix's band (nodes i-2..i+2). A force whose
+// which must be symmetric. Entries within BandedMatrix's band (degrees of freedom at most 5
+// apart) go into `stiffness`; a module coupling nodes far apart along the rod (self-contact)
+// adds the lower-triangle entries beyond it to ForceContext::off_band, and Newton then solves
+// that iteration with a sparse factorisation (sim/step/sparse_solve.h). A force whose
 // exact Jacobian is not symmetric (friction) adds a symmetric approximation: Newton then
 // converges linearly but still to the right answer, since convergence is judged on the residual.
 // Modules are immutable (const), so one Model can be shared by many runs and threads: per-step
@@ -17,8 +20,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "sim/step/banded_matrix.h"
 #include "sim/step/controls.h"
@@ -32,6 +37,9 @@ struct ModuleCache {
   virtual ~ModuleCache() = default;
 };
 
+// Newton matrix entries outside the band: (row, column, value) with row > column + 5.
+using OffBandEntries = std::vector<Eigen::Triplet<double>>;
+
 struct ForceContext {
   double t = 0.0;                         // s, time the forces act at (end of the step)
   const Eigen::VectorXd* x = nullptr;     // (2N), m, current Newton iterate
@@ -41,6 +49,7 @@ struct ForceContext {
                                           // applied loads (gravity, point loads) multiply by it
   const Controls* controls = nullptr;
   const State* start = nullptr;           // state at the start of the step
+  OffBandEntries* off_band = nullptr;     // where entries beyond the band go (null: none wanted)
   ModuleCache* cache = nullptr;           // the called module's cache in this run, or null (then a
                                           // module that keeps one works from scratch: slower, same answer)
 

@@ -3,17 +3,20 @@
 #include <cmath>
 #include <string>
 
+#include "sim/contact/self_contact.h"
 #include "sim/rod/loads.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim {
 
 Vec2 NodeConstraint::position(double t) const {
-  return origin + velocity * t + amplitude * std::sin(2.0 * M_PI * frequency * t);
+  const Vec2 fed = feed.enabled() ? Vec2((feed.fed_length(t) - feed.fed_length(0.0)) * feed_direction) : Vec2::Zero();
+  return origin + velocity * t + amplitude * std::sin(2.0 * M_PI * frequency * t) + fed;
 }
 
 Vec2 NodeConstraint::rate(double t) const {
-  return velocity + amplitude * (2.0 * M_PI * frequency * std::cos(2.0 * M_PI * frequency * t));
+  const Vec2 fed = feed.enabled() ? Vec2(feed.speed(t) * feed_direction) : Vec2::Zero();
+  return velocity + amplitude * (2.0 * M_PI * frequency * std::cos(2.0 * M_PI * frequency * t)) + fed;
 }
 
 int resolve_node(int node, int nodes) {
@@ -61,6 +64,13 @@ Model build_model(const Scene& scene) {
     const std::string pointer = "/boundary/pinned/" + std::to_string(k);
     constrain(fixed(checked_node(scene, bc.pinned[k], pointer)), pointer);
   }
+  for (std::size_t k = 0; k < bc.supports.size(); ++k) {
+    const std::string pointer = "/boundary/supports/" + std::to_string(k);
+    NodeConstraint c = fixed(checked_node(scene, bc.supports[k].node, pointer + "/node"));
+    c.hold_x = bc.supports[k].axis == SupportAxis::kX;
+    c.hold_y = !c.hold_x;
+    constrain(c, pointer);
+  }
   for (std::size_t k = 0; k < bc.prescribed.size(); ++k) {
     const std::string pointer = "/boundary/prescribed/" + std::to_string(k);
     const auto& p = bc.prescribed[k];
@@ -72,6 +82,13 @@ Model build_model(const Scene& scene) {
   }
 
   const LoadSpec& loads = scene.loads;
+  // Bodies first: their mass is the rod's to every module after (gravity acts on it too).
+  bool body_drag = false;
+  for (std::size_t k = 0; k < loads.bodies.size(); ++k) {
+    const BodySpec& b = loads.bodies[k];
+    model.rod.mass[checked_node(scene, b.node, "/loads/bodies/" + std::to_string(k) + "/node")] += b.mass;
+    body_drag = body_drag || b.linear_drag > 0.0 || b.quadratic_drag > 0.0;
+  }
   if (loads.gravity.enabled) model.forces.push_back(std::make_unique<GravityModule>(model.rod, loads.gravity.acceleration));
   if (!loads.point_loads.empty()) {
     for (std::size_t k = 0; k < loads.point_loads.size(); ++k)
@@ -82,6 +99,9 @@ Model build_model(const Scene& scene) {
     model.forces.push_back(std::make_unique<ViscousDampingModule>(model.rod, loads.damping.coefficient));
   if (loads.drag.enabled) model.forces.push_back(std::make_unique<QuadraticDragModule>(model.rod, loads.drag));
   if (loads.magnet.enabled) model.forces.push_back(std::make_unique<MagnetLoadModule>(n, loads.magnet));
+  if (body_drag) model.forces.push_back(std::make_unique<BodyDragModule>(n, loads.bodies));
+  if (scene.contact.self)
+    model.forces.push_back(std::make_unique<SelfContactModule>(model.rod, resolve_contact_params(scene.contact, model.rod)));
   return model;
 }
 
@@ -90,10 +110,12 @@ State initial_state(const Model& model) {
   s.t = 0.0;
   s.x = model.rod.x_initial;
   s.v = Eigen::VectorXd::Zero(model.dofs());
-  for (const auto& c : model.constraints) {
-    s.x.segment<2>(2 * c.node) = c.position(0.0);
-    s.v.segment<2>(2 * c.node) = c.rate(0.0);
-  }
+  for (const auto& c : model.constraints)
+    for (int axis = 0; axis < 2; ++axis)
+      if (axis == 0 ? c.hold_x : c.hold_y) {
+        s.x[2 * c.node + axis] = c.position(0.0)[axis];
+        s.v[2 * c.node + axis] = c.rate(0.0)[axis];
+      }
   return s;
 }
 

@@ -25,6 +25,12 @@ struct NodeConstraint {
   Vec2 velocity = Vec2::Zero();   // m/s
   Vec2 amplitude = Vec2::Zero();  // m
   double frequency = 0.0;         // Hz
+  // Which coordinates are held: both for a clamp, a pin or a prescribed motion; one for a support
+  // (a roller holds y and lets x slide, a slider the reverse).
+  bool hold_x = true, hold_y = true;
+  // Proximal advancement (AdvanceSpec): moved by its fed length along feed_direction.
+  AdvanceSpec feed;                    // none unless feed.enabled()
+  Vec2 feed_direction = Vec2::Zero();  // unit
   Vec2 position(double t) const;
   Vec2 rate(double t) const;      // dx/dt, m/s
 };

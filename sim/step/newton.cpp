@@ -4,12 +4,13 @@
 #include <cstdio>
 
 #include "sim/step/banded_ldlt.h"
+#include "sim/step/sparse_solve.h"
 
 namespace vascsim {
 
 Workspace::Workspace(const Model& model) : jacobian(model.dofs()), elastic(model.rod) {
   const int n = model.dofs();
-  for (Eigen::VectorXd* v : {&residual, &gradient, &force, &x, &v, &dx, &x_trial, &x_hat, &v_hat, &target})
+  for (Eigen::VectorXd* v : {&residual, &gradient, &force, &reaction, &x, &v, &dx, &x_trial, &x_hat, &v_hat, &target})
     v->setZero(n);
   fixed.assign(static_cast<std::size_t>(n), 0);
   for (const auto& f : model.forces) caches.push_back(f->make_cache());
@@ -61,7 +62,10 @@ NewtonOutcome& round_off_stop(const Model& model, const NewtonProblem& p, Worksp
 double assemble(const Model& model, const NewtonProblem& p, const Eigen::VectorXd& x, Workspace& ws, bool jacobian) {
   const int n = model.nodes();
   BandedMatrix* jac = jacobian ? &ws.jacobian : nullptr;
-  if (jac) jac->set_zero();
+  if (jac) {
+    jac->set_zero();
+    ws.off_band.clear();
+  }
   if (p.c > 0.0) {
     ws.v.noalias() = (x - ws.x_hat) * p.c;
   } else {
@@ -71,7 +75,8 @@ double assemble(const Model& model, const NewtonProblem& p, const Eigen::VectorX
 
   ws.force.setZero();
   if (!model.forces.empty()) {
-    const ForceContext ctx = context_of(p, x, ws.v);
+    ForceContext ctx = context_of(p, x, ws.v);
+    ctx.off_band = jac ? &ws.off_band : nullptr;
     for (std::size_t k = 0; k < model.forces.size(); ++k) model.forces[k]->add(module_context(ctx, ws, k), ws.force, jac);
   }
 
@@ -87,8 +92,10 @@ double assemble(const Model& model, const NewtonProblem& p, const Eigen::VectorX
       }
       if (ws.fixed[static_cast<std::size_t>(d)]) {
         ws.residual[d] = 0.0;
+        ws.reaction[d] = inertia + ws.gradient[d] - ws.force[d];
         continue;
       }
+      ws.reaction[d] = 0.0;
       ws.residual[d] = inertia + ws.gradient[d] - ws.force[d];
       inertia_max = std::max(inertia_max, std::abs(inertia));
       grad_max = std::max(grad_max, std::abs(ws.gradient[d]));
@@ -125,15 +132,20 @@ NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace
                            static_cast<double>(out.iterations), rinf / std::max(scale, 1e-300));
       return out;
     }
-    // The 2x2-block factorisation: the same answer as banded_ldlt_factor up to round-off and
-    // about 1.4x faster (a shorter dependency chain, docs/solver.md).
-    const LdltResult f = banded_block_ldlt_factor(ws.jacobian);
-    if (!f.ok) {
-      out.failure = format("singular Newton matrix at degree of freedom %.0f (node %.0f)", f.failed_row, f.failed_row / 2);
+    ws.dx = -ws.residual;
+    if (ws.off_band.empty()) {
+      // The 2x2-block factorisation: the same answer as banded_ldlt_factor up to round-off and
+      // about 1.4x faster (a shorter dependency chain, docs/solver.md).
+      const LdltResult f = banded_block_ldlt_factor(ws.jacobian);
+      if (!f.ok) {
+        out.failure = format("singular Newton matrix at degree of freedom %.0f (node %.0f)", f.failed_row, f.failed_row / 2);
+        return out;
+      }
+      banded_block_ldlt_solve(ws.jacobian, ws.dx);
+    } else if (!sparse_ldlt_solve(ws.jacobian, ws.off_band, ws.fixed, ws.dx)) {
+      out.failure = "singular Newton matrix (with self-contact)";
       return out;
     }
-    ws.dx = -ws.residual;
-    banded_block_ldlt_solve(ws.jacobian, ws.dx);
     ++out.iterations;
     const double dx_inf = ws.dx.lpNorm<Eigen::Infinity>();
     if (!std::isfinite(dx_inf)) {

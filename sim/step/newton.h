@@ -31,6 +31,10 @@ struct Workspace {
   Eigen::VectorXd residual;  // (2N), N
   Eigen::VectorXd gradient;  // (2N), N, grad E
   Eigen::VectorXd force;     // (2N), N, sum of the modules' forces
+  // (2N), N, at held degrees of freedom (fixed): the force the constraint exerts on the rod at
+  // the last assembled iterate (inertia + grad E - module forces); 0 elsewhere.
+  Eigen::VectorXd reaction;
+  OffBandEntries off_band;   // the Newton matrix's entries beyond the band (self-contact)
   Eigen::VectorXd x, v, dx, x_trial, x_hat, v_hat, target;  // (2N)
   std::vector<char> fixed;   // (2N), 1 for a prescribed degree of freedom
   ElasticScratch elastic;

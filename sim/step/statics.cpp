@@ -3,22 +3,13 @@
 #include <cstdio>
 
 #include "sim/step/banded_ldlt.h"
+#include "sim/step/stepper.h"
 
 namespace vascsim {
 
 StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls) {
   StaticReport report;
-  std::fill(ws.fixed.begin(), ws.fixed.end(), 0);
-  for (const auto& c : model.constraints) {
-    ws.target.segment<2>(2 * c.node) = c.position(state.t);
-    ws.fixed[2 * c.node] = ws.fixed[2 * c.node + 1] = 1;
-  }
-  for (const auto& g : controls.targets) {
-    const int node = resolve_node(g.node, model.nodes());
-    if (node < 0) continue;
-    ws.target.segment<2>(2 * node) = g.position + g.velocity * (state.t - controls.time);
-    ws.fixed[2 * node] = ws.fixed[2 * node + 1] = 1;
-  }
+  set_targets(model, controls, state.t, ws);
   Eigen::VectorXd x = state.x;
   for (std::size_t d = 0; d < ws.fixed.size(); ++d)
     if (ws.fixed[d]) x[static_cast<Eigen::Index>(d)] = ws.target[static_cast<Eigen::Index>(d)];

@@ -5,14 +5,12 @@
 
 namespace vascsim {
 
-namespace {
-
-// Marks the prescribed degrees of freedom and their positions at time t.
 void set_targets(const Model& model, const Controls& controls, double t, Workspace& ws) {
   std::fill(ws.fixed.begin(), ws.fixed.end(), 0);
   for (const auto& c : model.constraints) {
     ws.target.segment<2>(2 * c.node) = c.position(t);
-    ws.fixed[2 * c.node] = ws.fixed[2 * c.node + 1] = 1;
+    ws.fixed[2 * c.node] = c.hold_x;
+    ws.fixed[2 * c.node + 1] = c.hold_y;
   }
   for (const auto& g : controls.targets) {
     const int node = resolve_node(g.node, model.nodes());
@@ -21,6 +19,8 @@ void set_targets(const Model& model, const Controls& controls, double t, Workspa
     ws.fixed[2 * node] = ws.fixed[2 * node + 1] = 1;
   }
 }
+
+namespace {
 
 bool attempt(const Model& model, State& state, Workspace& ws, const Controls& controls, double h, StepReport& report) {
   // Scheme coefficients (see stepper.h).

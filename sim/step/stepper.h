@@ -34,6 +34,10 @@ struct StepReport {
   std::string failure;         // when !ok: what went wrong, at what time and dt
 };
 
+// Marks the held degrees of freedom in ws.fixed (constraints of the model, the controls' targets)
+// and their positions at time t in ws.target.
+void set_targets(const Model& model, const Controls& controls, double t, Workspace& ws);
+
 // BDF2 steps no more than this many times longer than the previous one (zero-stability needs
 // less than 1 + sqrt 2); a longer step is taken with backward Euler.
 inline constexpr double kMaxBdf2StepRatio = 2.0;

@@ -17,5 +17,8 @@ for command in $commands; do
     grep -q -- "$option" <<< "$text" || fail "option $option of vascsim $command is missing"
   done
 done
-grep -q -- "--camera fit|follow|center" <<< "$text" || fail "render's --camera line is not shown as written"
+# A line with | and -- as the help has it (the renderer's; a build without it has no render command).
+if grep -qx render <<< "$commands"; then
+  grep -q -- "--camera fit|follow|center" <<< "$text" || fail "render's --camera line is not shown as written"
+fi
 echo "manpage_test: ok"

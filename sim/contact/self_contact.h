@@ -1,0 +1,36 @@
+// Rod self-contact (contact.self): the IPC barrier of barrier.h between every node and every
+// rod edge it is not part of or next to, at a gap of distance - 2 r_o (the two surfaces). In 2D
+// two segments come closest at an end of one of them, so node-edge pairs see every edge-edge
+// approach. Its Hessian couples nodes far apart along the rod: those entries fall outside the
+// Newton matrix's band and go to ForceContext::off_band, which makes Newton solve that step with
+// a sparse factorisation (sim/step/sparse_solve.h) instead of the banded one. Each pair's 6x6
+// Hessian is projected onto the positive semi-definite cone (as IPC does), so Newton keeps a
+// descent direction. Pairs are found by a sort on x (sweep and prune), so a rod that does not
+// touch itself costs O(N log N) per evaluation. Channel force/contact.
+#pragma once
+
+#include "sim/contact/contact_params.h"
+#include "sim/log/channel_names.h"
+#include "sim/step/force_module.h"
+
+namespace vascsim {
+
+class SelfContactModule : public ForceModule {
+ public:
+  SelfContactModule(const RodModel& rod, const ContactParams& params);
+  std::string channel() const override { return channel::kContactForce; }
+  void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
+  // Keeps every pair's gap open: a step may close at most 80 % of any gap, bounded by how fast the
+  // gap can shrink (the node's and the farther edge end's displacement).
+  double max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const override;
+
+  // Node-edge pairs (node, first node of the edge) whose distance may be below `reach` (m).
+  std::vector<std::pair<int, int>> candidate_pairs(const Eigen::VectorXd& x, double reach) const;
+
+ private:
+  int nodes_;
+  double thickness_;  // m, 2 r_o
+  double g_hat_, kappa_;
+};
+
+}  // namespace vascsim

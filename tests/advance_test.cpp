@@ -1,0 +1,105 @@
+// Proximal advancement (control.advance): the drive holds the rod's first two nodes and feeds
+// them along the inlet. References the code did not produce: in a straight vessel, with no tip
+// actuation and nothing touching the wall, the whole rod slides as one, so its tip advances by
+// the fed length less its elastic shortening, and at constant speed v the drive pushes against
+// the axial resistance alone: viscous damping c L v plus the cross-flow drag's tangential part
+// 1/2 rho Cd_t (2 r_o) L v^2 (docs/references.md section 4; the nodes' Voronoi lengths sum to
+// L). The drive holds the first edge rigid; past it the axial force falls linearly from
+// F L' / L to zero at the free tip (L' = L - dl), so the rod is shorter by F L'^2 / (2 L EA).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "sim/io/scene_reader.h"
+#include "sim/run/compile.h"
+#include "sim/run/run.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim {
+namespace {
+
+const char* kStraightVessel = R"({
+  "name": "straight",
+  "vessels": {"nodes": {"in": [0.1, 0.5], "out": [1.9, 0.5]}, "segments": [{"from": "in", "to": "out", "radius": 0.05}],
+              "start": "in", "goal": "out"},
+  "rod": {"nodes": 21},
+  "loads": {"drag": {"enabled": true, "area": "nodes", "tangential_coefficient": 1.0},
+            "damping": {"enabled": true, "coefficient": 0.1}},
+  "control": {"mode": "none", "disturbance": {"amplitude": 0},
+              "advance": {"points": [[0, 0], [0.5, 0.0125], [3, 0.1375]]}},
+  "run": {"duration": 3, "output_interval": 0.1}
+})";
+
+struct Frames : FrameSink {
+  std::vector<double> times;
+  std::vector<std::vector<double>> values;
+  void write(double t, const std::vector<double>& v) override {
+    times.push_back(t);
+    values.push_back(v);
+  }
+};
+
+TEST(Advance, InAStraightVesselTheRodSlidesAsOneAndTheDrivePushesAgainstItsAxialDrag) {
+  const Scene scene = read_scene_text(kStraightVessel, "advance.json");
+  vascsim::Run run(compile(scene));
+  Frames frames;
+  ASSERT_TRUE(run.run(frames)) << run.statistics().failure;
+  const auto& channels = run.channels();
+  int feed = -1, fed = -1;
+  std::size_t offset = 0, feed_offset = 0, fed_offset = 0;
+  for (std::size_t k = 0; k < channels.size(); ++k) {
+    if (channels[k].name == "feed/force") feed = static_cast<int>(k), feed_offset = offset;
+    if (channels[k].name == "feed/length") fed = static_cast<int>(k), fed_offset = offset;
+    offset += channels[k].count;
+  }
+  ASSERT_GE(feed, 0) << "no feed/force channel";
+  ASSERT_GE(fed, 0) << "no feed/length channel";
+  const int n = scene.rod.nodes, tip_x = 2 * (n - 1);
+  const auto& first = frames.values.front();
+  const auto& last = frames.values.back();
+  const RodSpec& rod = run.scene().rod;
+  const double v = 0.05;  // m/s after 0.5 s; the axial ringing the start excites has decayed by 3 s
+  const double l = rod.length;
+  const double expected = scene.loads.damping.coefficient * l * v +
+                          0.5 * scene.loads.drag.fluid_density * scene.loads.drag.tangential_coefficient *
+                              2 * rod.outer_radius * l * v * v;
+  EXPECT_NEAR(last[feed_offset], expected, 2e-3 * expected) << "steady push = axial damping and drag";
+  const double ea = rod.youngs_modulus * M_PI * (rod.outer_radius * rod.outer_radius - rod.inner_radius * rod.inner_radius);
+  EXPECT_NEAR(last[fed_offset], 0.1375, 1e-12);
+  const double free = l - l / (n - 1);
+  const double shortening = expected * free * free / (2 * l * ea);
+  EXPECT_NEAR(last[tip_x] - first[tip_x], 0.1375 - shortening, 5e-3 * shortening)
+      << "the tip advances with the root, less the rod's elastic shortening";
+  EXPECT_NEAR(last[tip_x + 1], first[tip_x + 1], 1e-9) << "and stays on the axis";
+  EXPECT_GT(run.statistics().feed_force_max, 0.99 * expected);
+  EXPECT_LT(run.statistics().feed_force_mean, run.statistics().feed_force_max);
+}
+
+TEST(Advance, ProfilesAndErrors) {
+  AdvanceSpec a;
+  a.points = {{1.0, 0.0}, {3.0, 0.1}};
+  EXPECT_EQ(a.fed_length(0.5), 0.0);
+  EXPECT_NEAR(a.fed_length(2.0), 0.05, 1e-15);
+  EXPECT_EQ(a.fed_length(9.0), 0.1);
+  EXPECT_NEAR(a.speed(2.0), 0.05, 1e-15);
+  EXPECT_EQ(a.speed(3.5), 0.0);
+  const Scene s = read_scene_text(R"({"control": {"advance": {"speed": 0.01, "start": 1, "stop": 4}}})", "a.json");
+  ASSERT_EQ(s.control.advance.points.size(), 2u);
+  EXPECT_NEAR(s.control.advance.fed_length(4.0), 0.03, 1e-15);
+  EXPECT_EQ(read_scene_text(scene_to_json(s), "a.json").control.advance.points, s.control.advance.points);
+  for (const char* bad : {R"({"control": {"advance": {"points": [[0, 0], [0, 1]]}}})",
+                          R"({"control": {"advance": {"points": [[0, 0]]}}})",
+                          R"({"control": {"advance": {"speed": 1, "start": 2, "stop": 1}}})",
+                          R"({"control": {"advance": {"speed": 1, "points": [[0, 0], [1, 1]]}}})"}) {
+    try {
+      read_scene_text(bad, "a.json");
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("a.json: /control/advance/"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace vascsim

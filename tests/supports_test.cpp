@@ -1,0 +1,84 @@
+// Supports per axis (boundary.supports: a node held in x only or y only) against a reference
+// the code did not produce: a simply supported Euler-Bernoulli beam under its own weight, pinned
+// at one end and on a roller at the other, sags at mid-span by 5 w L^4 / (384 EI) (Timoshenko &
+// Gere, Mechanics of Materials, table of beam deflections), w = rho A g per metre. The roller lets
+// its end slide inwards as the beam bends; a pin there instead would stretch it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/io/scene_reader.h"
+#include "sim/run/compile.h"
+#include "sim/scene/input_error.h"
+#include "sim/step/model.h"
+#include "sim/step/statics.h"
+#include "tests/rod_test_scenes.h"
+
+namespace vascsim {
+namespace {
+
+struct Sag {
+  double mid_span;      // m, deflection of the middle node across the beam
+  double roller_along;  // m, displacement of the roller along the beam (negative: inwards)
+  double roller_across; // m, displacement of the roller across the beam (held: 0)
+};
+
+// A beam along `direction` (0: +x, pi/2: +y), gravity across it; the roller holds the coordinate
+// across the beam.
+Sag simply_supported(double direction, int nodes, double g) {
+  Scene scene = test::cantilever(nodes);
+  scene.boundary.clamp = ClampKind::kNone;
+  scene.shape.direction = direction;
+  scene.boundary.pinned = {0};
+  const bool along_x = direction == 0.0;
+  scene.boundary.supports = {{-1, along_x ? SupportAxis::kY : SupportAxis::kX}};
+  scene.loads.gravity.enabled = true;
+  scene.loads.gravity.acceleration = along_x ? Vec2(0.0, -g) : Vec2(-g, 0.0);
+  const Model model = *compile(scene);
+  State state = initial_state(model);
+  const Eigen::VectorXd x0 = state.x;
+  Workspace ws(model);
+  const StaticReport r = solve_static(model, state, ws, Controls{});
+  EXPECT_TRUE(r.ok) << r.failure;
+  const int mid = nodes / 2, tip = nodes - 1;
+  const int across = along_x ? 1 : 0, along = 1 - across;
+  return {state.x[2 * mid + across] - x0[2 * mid + across], state.x[2 * tip + along] - x0[2 * tip + along],
+          state.x[2 * tip + across] - x0[2 * tip + across]};
+}
+
+TEST(Supports, RollerAndPinCarryABeamThatSagsAsEulerBernoulliSays) {
+  const RodSpec rod;
+  const double area = M_PI * (rod.outer_radius * rod.outer_radius - rod.inner_radius * rod.inner_radius);
+  const double ei = test::bending_stiffness(rod), l = rod.length;
+  const double g = 0.002;  // m/s^2: a small load, linear regime (sag 0.17 % of the span)
+  const double exact = 5 * rod.density * area * g * std::pow(l, 4) / (384 * ei);
+  for (const double direction : {0.0, M_PI / 2}) {  // a roller (holds y), then a slider (holds x)
+    const Sag coarse = simply_supported(direction, 41, g), fine = simply_supported(direction, 81, g);
+    EXPECT_NEAR(-fine.mid_span, exact, 5e-3 * exact) << "direction " << direction;
+    EXPECT_LT(std::abs(-fine.mid_span - exact), std::abs(-coarse.mid_span - exact) + 1e-3 * exact) << "converges";
+    EXPECT_EQ(fine.roller_across, 0.0) << "the held coordinate does not move";
+    // An inextensible beam's chord shortens by (1/2) integral (y')^2 dx, 2.487 (sag / L)^2 L for this
+    // shape (the quartic deflection curve, (1/2) (3.2)^2 (16/7 - 8 + 36/5 + 2 - 4 + 1)): the roller slides inwards by that.
+    EXPECT_LT(fine.roller_along, 0.0);
+    EXPECT_NEAR(-fine.roller_along, 2.487 * exact * exact / l, 0.1 * 2.487 * exact * exact / l);
+  }
+}
+
+TEST(Supports, ReadWriteAndErrors) {
+  const Scene s = read_scene_text(R"({"maze": null, "boundary": {"supports": [{"node": -1, "hold": "x"}]}})", "s.json");
+  ASSERT_EQ(s.boundary.supports.size(), 1u);
+  EXPECT_EQ(s.boundary.supports[0].axis, SupportAxis::kX);
+  EXPECT_EQ(read_scene_text(scene_to_json(s), "s.json").boundary.supports[0].axis, SupportAxis::kX);
+  try {
+    read_scene_text(R"({"maze": null, "boundary": {"supports": [{"node": 2, "hold": "z"}]}})", "s.json");
+    ADD_FAILURE() << "hold z accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/boundary/supports/0/hold"), std::string::npos) << e.what();
+  }
+  Scene twice = s;
+  twice.boundary.pinned = {-1};
+  EXPECT_THROW(compile(twice), InputError) << "a node pinned and supported";
+}
+
+}  // namespace
+}  // namespace vascsim
