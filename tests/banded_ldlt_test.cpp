@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
+#include <cmath>
 #include <random>
 
 #include "sim/step/banded_ldlt.h"
@@ -104,6 +105,46 @@ TEST(BandedBlockLdlt, ReportsSingularMatrix) {
   const LdltResult f = banded_block_ldlt_factor(a);
   EXPECT_FALSE(f.ok);
   EXPECT_EQ(f.failed_row, 1);
+}
+
+// Two nodes tied by a spring of stiffness k, the second held to the ground by soft springs s1
+// and s2 (a rotated pair): D_1 = diag(s1, s2) rotated, both eigenvalues ~1e-9 of its diagonal
+// k + s. A well-posed pivot however small next to the diagonal (a fine cantilever's tip, issue 16
+// item 5a); the determinant s1 s2 is 1e-18 of the diagonal squared, which the old test rejected.
+// With s2 at round-off instead, the block is singular and must be reported.
+BandedMatrix spring_pair(double k, double s1, double s2) {
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  Eigen::Matrix2d r;
+  r << c, -s, s, c;
+  const Eigen::Matrix2d ground = r * Eigen::Vector2d(s1, s2).asDiagonal() * r.transpose();
+  BandedMatrix a(4);
+  Eigen::Matrix4d dense = Eigen::Matrix4d::Zero();
+  dense.topLeftCorner<2, 2>() = k * Eigen::Matrix2d::Identity();
+  dense.topRightCorner<2, 2>() = -k * Eigen::Matrix2d::Identity();
+  dense.bottomLeftCorner<2, 2>() = -k * Eigen::Matrix2d::Identity();
+  dense.bottomRightCorner<2, 2>() = k * Eigen::Matrix2d::Identity() + ground;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j <= i; ++j) a.lower(i, j) = dense(i, j);
+  return a;
+}
+
+TEST(BandedBlockLdlt, AcceptsSmallWellPosedPivotAndRejectsRankDeficientOne) {
+  const double k = 1e4;
+  BandedMatrix a = spring_pair(k, 2e-5, 1e-5);
+  const Eigen::MatrixXd dense = a.to_dense();
+  const LdltResult f = banded_block_ldlt_factor(a);
+  ASSERT_TRUE(f.ok) << "row " << f.failed_row;
+  EXPECT_EQ(f.negative_pivots, 0);
+  Eigen::VectorXd b(4);
+  b << 0.0, 0.0, 1e-5, -2e-5;
+  const Eigen::VectorXd expected = dense.fullPivLu().solve(b);
+  banded_block_ldlt_solve(a, b);
+  EXPECT_LT((b - expected).lpNorm<Eigen::Infinity>(), 1e-6 * expected.lpNorm<Eigen::Infinity>());
+
+  BandedMatrix singular = spring_pair(k, 2e-5, 1e-16 * k);
+  const LdltResult g = banded_block_ldlt_factor(singular);
+  EXPECT_FALSE(g.ok);
+  EXPECT_EQ(g.failed_row, 3);
 }
 
 TEST(BandedMatrix, MultiplyMatchesDense) {

@@ -1,5 +1,6 @@
 #include "sim/step/banded_ldlt.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vascsim {
@@ -150,8 +151,16 @@ LdltResult banded_block_ldlt_factor(BandedMatrix& a, double pivot_tol) {
       d = {d.a - e1.a, d.b - e1.b, d.c - e1.c, d.d - e1.d};
       set_block(band, 1, 0, l1);
     }
+    // The pivot vanishes when its smallest eigenvalue is at the round-off of the entries it was
+    // computed from: |lambda_min| <= pivot_tol * scale, the scalar test's |d_i| <= pivot_tol |A(i,i)|
+    // per eigenvalue. D is symmetric, so |lambda_max| <= |D|_inf <= sqrt 2 |lambda_max| and
+    // |det| / |D|_inf is |lambda_min| to within a factor sqrt 2, without a square root.
+    // Comparing det with scale^2 instead (as before issue 16) tested the product of the two
+    // eigenvalues: at the tip of a bent, finely meshed cantilever both are O(EI/L^3) while scale is
+    // O(EA/dl), and their product fell below 1e-13 scale^2 at a few hundred nodes.
     const double det = d.a * d.d - d.b * d.c;
-    if (!std::isfinite(det) || det == 0.0 || std::abs(det) <= pivot_tol * scale * scale) {
+    const double d_norm = std::max(std::abs(d.a) + std::abs(d.b), std::abs(d.c) + std::abs(d.d));
+    if (!std::isfinite(det) || det == 0.0 || std::abs(det) <= pivot_tol * d_norm * scale) {
       result.failed_row = 2 * i + 1;
       return result;
     }

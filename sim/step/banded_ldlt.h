@@ -40,6 +40,10 @@ namespace vascsim {
 // independent 2x2 products, a shorter dependency chain than the scalar rows (the scalar
 // factorisation is latency-bound). The diagonal blocks store D_i^-1; negative_pivots counts
 // negative eigenvalues of the D_i (still the inertia of A); failed_row is 2i+1 for block i.
+// A block pivot counts as vanished when its smallest eigenvalue (in magnitude) is
+// <= pivot_tol * (|A(2i,2i)| + |A(2i+1,2i+1)| + 2 |A(2i+1,2i)|), to within a factor sqrt 2: the
+// scalar test per eigenvalue, whatever the other eigenvalue (a finely meshed bent cantilever's
+// tip pivot has both eigenvalues ~ EI/L^3, 1e-9 of the diagonal's EA/dl, and is well-posed).
 LdltResult banded_block_ldlt_factor(BandedMatrix& a, double pivot_tol = 1e-13);
 void banded_block_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b);
 
