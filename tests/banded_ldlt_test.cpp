@@ -147,6 +147,42 @@ TEST(BandedBlockLdlt, AcceptsSmallWellPosedPivotAndRejectsRankDeficientOne) {
   EXPECT_EQ(g.failed_row, 3);
 }
 
+// The two tools of sim/step/stable_branch.h on an indefinite rod matrix: the direction from the
+// factor has negative curvature, and with the pivots flipped the solve applies a positive
+// definite inverse, (L |D| L^T)^-1, which is A^-1 itself where A is definite.
+TEST(BandedBlockLdlt, NegativeCurvatureDirectionAndFlippedPivots) {
+  std::mt19937 rng(13);
+  for (double shift : {0.3, 12.0}) {
+    BandedMatrix a = random_rod_band(40, shift, rng);
+    const Eigen::MatrixXd dense = a.to_dense();
+    const LdltResult f = banded_block_ldlt_factor(a);
+    ASSERT_TRUE(f.ok);
+    if (shift < 1.0) {
+      ASSERT_GT(f.negative_pivots, 0) << "the rig must be indefinite";
+    }
+    const Eigen::VectorXd y = banded_block_ldlt_negative_direction(a);
+    if (f.negative_pivots > 0) {
+      EXPECT_LT(y.dot(dense * y), -1e-6 * y.squaredNorm()) << "shift " << shift;
+    } else {
+      EXPECT_EQ(y.norm(), 0.0);
+    }
+    // The inverse the flipped factor applies, column by column.
+    banded_block_ldlt_absolute_pivots(a);
+    Eigen::MatrixXd inverse(80, 80);
+    for (int j = 0; j < 80; ++j) {
+      Eigen::VectorXd e = Eigen::VectorXd::Unit(80, j);
+      banded_block_ldlt_solve(a, e);
+      inverse.col(j) = e;
+    }
+    EXPECT_LT((inverse - inverse.transpose()).cwiseAbs().maxCoeff(), 1e-9 * inverse.cwiseAbs().maxCoeff());
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (inverse + inverse.transpose()));
+    EXPECT_GT(eig.eigenvalues().minCoeff(), 0.0) << "shift " << shift;
+    if (f.negative_pivots == 0) {
+      EXPECT_LT((dense * inverse - Eigen::MatrixXd::Identity(80, 80)).cwiseAbs().maxCoeff(), 1e-9);
+    }
+  }
+}
+
 TEST(BandedMatrix, MultiplyMatchesDense) {
   std::mt19937 rng(3);
   const BandedMatrix a = random_band(23, 0.0, rng);

@@ -22,6 +22,7 @@ void read_solver(FieldReader& in, SolverSpec& out) {
   out.adaptive = in.boolean("adaptive", out.adaptive);
   out.max_halvings = static_cast<int>(in.integer("max_halvings", out.max_halvings, 0, 40));
   out.load_steps = static_cast<int>(in.integer("load_steps", out.load_steps, 1, 100000));
+  out.stable_branch = in.boolean("stable_branch", out.stable_branch);
   in.finish();
 }
 
@@ -36,7 +37,8 @@ json write_solver(const SolverSpec& spec) {
           {"max_iterations", spec.max_iterations},
           {"adaptive", spec.adaptive},
           {"max_halvings", spec.max_halvings},
-          {"load_steps", spec.load_steps}};
+          {"load_steps", spec.load_steps},
+          {"stable_branch", spec.stable_branch}};
 }
 
 }  // namespace vascsim::io

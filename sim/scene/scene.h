@@ -199,6 +199,7 @@ struct SolverSpec {
   bool adaptive = true;                  // on failure retry with dt/2, down to dt / 2^max_halvings
   int max_halvings = 10;
   int load_steps = 10;                   // static mode: initial number of load increments
+  bool stable_branch = true;             // static mode: leave an unstable equilibrium for a stable one
 };
 // The named presets (docs/accuracy.md); returns false for an unknown name.
 inline bool apply_solver_preset(const std::string& name, SolverSpec& s) {

@@ -47,4 +47,16 @@ namespace vascsim {
 LdltResult banded_block_ldlt_factor(BandedMatrix& a, double pivot_tol = 1e-13);
 void banded_block_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b);
 
+// For leaving an unstable equilibrium (sim/step/stable_branch.h), given a block factor of A:
+// - a direction of negative curvature, y^T A y < 0: y = L^-T z, z the eigenvector of the first
+//   block pivot's negative eigenvalue (zero elsewhere), so y^T A y = z^T D z (the classic
+//   construction of modified-Newton methods, Gill & Murray 1974; More & Sorensen 1979). Zero if
+//   no pivot is negative.
+Eigen::VectorXd banded_block_ldlt_negative_direction(const BandedMatrix& factor);
+// - replaces every block pivot D_i by |D_i| (same eigenvectors, eigenvalue magnitudes), so that
+//   the solve applies (L |D| L^T)^-1: positive definite, and its Newton step descends an energy
+//   where A is indefinite, moving away from a saddle along its negative modes ("saddle-free
+//   Newton", Dauphin et al., NeurIPS 2014, with the modulus taken on the LDL^T pivots).
+void banded_block_ldlt_absolute_pivots(BandedMatrix& factor);
+
 }  // namespace vascsim
