@@ -107,8 +107,9 @@ struct RodSpec {
 };
 
 // Initial and rest shape of the rod (sim/rod/rod_model.cpp places the nodes). The rod starts at
-// `start` (the root; the clamp centre with a centred clamp) heading along `direction`, and is an
-// arc of `initial_curvature` (0: straight; large values coil it or fold it back on itself).
+// `start` (the root; the clamp centre with a centred clamp), its first edge heading along
+// `direction`, and is an arc of `initial_curvature` (0: straight; large values coil it or fold
+// it back on itself).
 struct ShapeSpec {
   Vec2 start = Vec2(0.0, 0.0);     // m, root of the rod
   double direction = 0.0;          // rad, heading of the first edge, from +x counter-clockwise
