@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
+#include <cmath>
 #include <random>
 
 #include "sim/step/banded_ldlt.h"
@@ -104,6 +105,82 @@ TEST(BandedBlockLdlt, ReportsSingularMatrix) {
   const LdltResult f = banded_block_ldlt_factor(a);
   EXPECT_FALSE(f.ok);
   EXPECT_EQ(f.failed_row, 1);
+}
+
+// Two nodes tied by a spring of stiffness k, the second held to the ground by soft springs s1
+// and s2 (a rotated pair): D_1 = diag(s1, s2) rotated, both eigenvalues ~1e-9 of its diagonal
+// k + s. A well-posed pivot however small next to the diagonal (a fine cantilever's tip, issue 16
+// item 5a); the determinant s1 s2 is 1e-18 of the diagonal squared, which the old test rejected.
+// With s2 at round-off instead, the block is singular and must be reported.
+BandedMatrix spring_pair(double k, double s1, double s2) {
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  Eigen::Matrix2d r;
+  r << c, -s, s, c;
+  const Eigen::Matrix2d ground = r * Eigen::Vector2d(s1, s2).asDiagonal() * r.transpose();
+  BandedMatrix a(4);
+  Eigen::Matrix4d dense = Eigen::Matrix4d::Zero();
+  dense.topLeftCorner<2, 2>() = k * Eigen::Matrix2d::Identity();
+  dense.topRightCorner<2, 2>() = -k * Eigen::Matrix2d::Identity();
+  dense.bottomLeftCorner<2, 2>() = -k * Eigen::Matrix2d::Identity();
+  dense.bottomRightCorner<2, 2>() = k * Eigen::Matrix2d::Identity() + ground;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j <= i; ++j) a.lower(i, j) = dense(i, j);
+  return a;
+}
+
+TEST(BandedBlockLdlt, AcceptsSmallWellPosedPivotAndRejectsRankDeficientOne) {
+  const double k = 1e4;
+  BandedMatrix a = spring_pair(k, 2e-5, 1e-5);
+  const Eigen::MatrixXd dense = a.to_dense();
+  const LdltResult f = banded_block_ldlt_factor(a);
+  ASSERT_TRUE(f.ok) << "row " << f.failed_row;
+  EXPECT_EQ(f.negative_pivots, 0);
+  Eigen::VectorXd b(4);
+  b << 0.0, 0.0, 1e-5, -2e-5;
+  const Eigen::VectorXd expected = dense.fullPivLu().solve(b);
+  banded_block_ldlt_solve(a, b);
+  EXPECT_LT((b - expected).lpNorm<Eigen::Infinity>(), 1e-6 * expected.lpNorm<Eigen::Infinity>());
+
+  BandedMatrix singular = spring_pair(k, 2e-5, 1e-16 * k);
+  const LdltResult g = banded_block_ldlt_factor(singular);
+  EXPECT_FALSE(g.ok);
+  EXPECT_EQ(g.failed_row, 3);
+}
+
+// The two tools of sim/step/stable_branch.h on an indefinite rod matrix: the direction from the
+// factor has negative curvature, and with the pivots flipped the solve applies a positive
+// definite inverse, (L |D| L^T)^-1, which is A^-1 itself where A is definite.
+TEST(BandedBlockLdlt, NegativeCurvatureDirectionAndFlippedPivots) {
+  std::mt19937 rng(13);
+  for (double shift : {0.3, 12.0}) {
+    BandedMatrix a = random_rod_band(40, shift, rng);
+    const Eigen::MatrixXd dense = a.to_dense();
+    const LdltResult f = banded_block_ldlt_factor(a);
+    ASSERT_TRUE(f.ok);
+    if (shift < 1.0) {
+      ASSERT_GT(f.negative_pivots, 0) << "the rig must be indefinite";
+    }
+    const Eigen::VectorXd y = banded_block_ldlt_negative_direction(a);
+    if (f.negative_pivots > 0) {
+      EXPECT_LT(y.dot(dense * y), -1e-6 * y.squaredNorm()) << "shift " << shift;
+    } else {
+      EXPECT_EQ(y.norm(), 0.0);
+    }
+    // The inverse the flipped factor applies, column by column.
+    banded_block_ldlt_absolute_pivots(a);
+    Eigen::MatrixXd inverse(80, 80);
+    for (int j = 0; j < 80; ++j) {
+      Eigen::VectorXd e = Eigen::VectorXd::Unit(80, j);
+      banded_block_ldlt_solve(a, e);
+      inverse.col(j) = e;
+    }
+    EXPECT_LT((inverse - inverse.transpose()).cwiseAbs().maxCoeff(), 1e-9 * inverse.cwiseAbs().maxCoeff());
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (inverse + inverse.transpose()));
+    EXPECT_GT(eig.eigenvalues().minCoeff(), 0.0) << "shift " << shift;
+    if (f.negative_pivots == 0) {
+      EXPECT_LT((dense * inverse - Eigen::MatrixXd::Identity(80, 80)).cwiseAbs().maxCoeff(), 1e-9);
+    }
+  }
 }
 
 TEST(BandedMatrix, MultiplyMatchesDense) {

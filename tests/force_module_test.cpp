@@ -74,6 +74,32 @@ std::vector<ModuleCase> module_cases() {
                      b.moment = 3e-5;
                      return base_rig(std::make_shared<PointLoadModule>(kNodes, std::vector<PointLoadSpec>{a, b}));
                    }});
+  // Each load alone too, with time profiles: the stiffness must carry the same factor
+  // load_scale * profile(t) as the force (the rigs run at load_scale 0.7, t = 0.5 s). The moment
+  // acts on the edge ending at its node, edge 0 for node 0.
+  cases.push_back({"point_force_ramp", [] {
+                     PointLoadSpec a;
+                     a.node = -1;
+                     a.force = Vec2(-2e-3, 1e-3);
+                     a.profile = LoadProfile::kRamp;
+                     a.ramp_time = 2.0;
+                     return base_rig(std::make_shared<PointLoadModule>(kNodes, std::vector<PointLoadSpec>{a}));
+                   }});
+  cases.push_back({"point_moment_tip_sine", [] {
+                     PointLoadSpec m;
+                     m.node = -1;
+                     m.moment = -4e-5;
+                     m.profile = LoadProfile::kSine;
+                     m.frequency = 0.3;
+                     m.phase = 0.4;
+                     return base_rig(std::make_shared<PointLoadModule>(kNodes, std::vector<PointLoadSpec>{m}));
+                   }});
+  cases.push_back({"point_moment_root", [] {
+                     PointLoadSpec m;
+                     m.node = 0;
+                     m.moment = 2e-5;
+                     return base_rig(std::make_shared<PointLoadModule>(kNodes, std::vector<PointLoadSpec>{m}));
+                   }});
   cases.push_back({"viscous_damping", [rod] { return base_rig(std::make_shared<ViscousDampingModule>(rod, 0.4)); }});
   cases.push_back({"drag_tip", [rod] {
                      DragSpec d;
@@ -132,6 +158,7 @@ Eigen::VectorXd force_at(const Rig& r, const Eigen::VectorXd& x, BandedMatrix* k
   ctx.x = &x;
   ctx.v = &v;
   ctx.dv_dx = r.dv_dx;
+  ctx.load_scale = 0.7;  // a static load increment: applied loads and their stiffness scale alike
   ctx.controls = &r.controls;
   ctx.start = &r.start;
   Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());

@@ -52,7 +52,8 @@ void expect_count(const nlohmann::json& w, const char* name, bool happened) {
 // (The default scene's own Newton does stop at round-off now and then: that count is not zero.)
 TEST(RunWarnings, NoneInAnOrdinaryRun) {
   const auto w = warnings_of(default_maze(1.0));
-  for (const char* name : {"step_retried", "paper_contact_iteration_cap", "unstable_equilibrium"}) expect_count(w, name, false);
+  for (const char* name : {"step_retried", "paper_contact_iteration_cap", "unstable_equilibrium", "left_unstable_equilibrium"})
+    expect_count(w, name, false);
 }
 
 TEST(RunWarnings, RoundOffStopsAndRetriesAreCounted) {
@@ -81,15 +82,22 @@ TEST(RunWarnings, PaperContactIterationCapIsCounted) {
 }
 
 // docs/references.md section 3 (Timoshenko & Gere): a clamped-free column stays straight under an
-// axial load past P_cr = pi^2 EI / (4 L^2), but that equilibrium is unstable.
+// axial load past P_cr = pi^2 EI / (4 L^2), but that equilibrium is unstable. Without
+// solver.stable_branch the solve returns it and warns; with it (the default) the solve buckles
+// the column and says so.
 TEST(RunWarnings, UnstableStaticEquilibriumIsCounted) {
-  for (const double factor : {0.5, 1.5}) {
-    Scene column = test::cantilever(21);
-    const double ei = test::bending_stiffness(column.rod), l = column.rod.length;
-    PointLoadSpec tip;
-    tip.force = Vec2(-factor * M_PI * M_PI * ei / (4 * l * l), 0.0);
-    column.loads.point_loads.push_back(tip);
-    expect_count(warnings_of(column), "unstable_equilibrium", factor > 1.0);
+  for (const bool stable_branch : {false, true}) {
+    for (const double factor : {0.5, 1.5}) {
+      Scene column = test::cantilever(21);
+      column.solver.stable_branch = stable_branch;
+      const double ei = test::bending_stiffness(column.rod), l = column.rod.length;
+      PointLoadSpec tip;
+      tip.force = Vec2(-factor * M_PI * M_PI * ei / (4 * l * l), 0.0);
+      column.loads.point_loads.push_back(tip);
+      const auto w = warnings_of(column);
+      expect_count(w, "unstable_equilibrium", factor > 1.0 && !stable_branch);
+      expect_count(w, "left_unstable_equilibrium", factor > 1.0 && stable_branch);
+    }
   }
 }
 

@@ -30,7 +30,7 @@ TEST(SolverSections, RoundTripIsStable) {
     "boundary": {"clamp": "centred", "pinned": [-1], "prescribed": [{"node": 5, "velocity": [0, 1]}]},
     "loads": {"gravity": {"enabled": true}, "drag": {"enabled": true, "area": "tip"},
               "point": [{"node": -1, "force": [0, -1], "profile": "sine", "frequency": 2}]},
-    "solver": {"preset": "accurate", "dt": 1e-4}})", "t.json");
+    "solver": {"preset": "accurate", "dt": 1e-4, "stable_branch": false}})", "t.json");
   const std::string once = scene_to_json(a);
   const Scene b = read_scene_text(once, "again.json");
   EXPECT_EQ(scene_to_json(b), once);
@@ -40,6 +40,7 @@ TEST(SolverSections, RoundTripIsStable) {
   EXPECT_EQ(b.loads.drag.area, DragArea::kTipFrontal);
   EXPECT_EQ(b.solver.dt, 1e-4);
   EXPECT_EQ(b.solver.scheme, Scheme::kBdf2);
+  EXPECT_FALSE(b.solver.stable_branch);
 }
 
 TEST(SolverSections, ErrorsNameTheJsonPath) {

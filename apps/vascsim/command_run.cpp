@@ -179,6 +179,8 @@ int run_run_command(int argc, char** argv) {
   warn("a step was retried with a smaller dt", s.warnings.step_retried);
   warn("paper contact hit contact.paper_iterations unsettled", s.warnings.paper_contact_cap);
   warn("the static equilibrium is unstable (the Newton matrix has negative pivots)", s.warnings.unstable_equilibrium);
+  warn("the load path reached an unstable equilibrium; the solve left it for a stable one (solver.stable_branch)",
+       s.warnings.left_unstable);
   if (!ok) {
     std::fprintf(stderr, "vascsim run: simulation failed: %s\n", s.failure.c_str());
     return 1;

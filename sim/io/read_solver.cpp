@@ -48,6 +48,7 @@ void read_solver(FieldReader& in, SolverSpec& out) {
   out.max_iterations = static_cast<int>(in.integer("max_iterations", out.max_iterations, 1, 1000));
   out.max_halvings = static_cast<int>(in.integer("max_halvings", out.max_halvings, 0, 40));
   out.load_steps = static_cast<int>(in.integer("load_steps", out.load_steps, 1, 100000));
+  out.stable_branch = in.boolean("stable_branch", out.stable_branch);
   in.finish();
 }
 
@@ -67,7 +68,8 @@ json write_solver(const SolverSpec& spec) {
           {"dt_min", spec.dt_min},
           {"dt_max", spec.dt_max},
           {"max_halvings", spec.max_halvings},
-          {"load_steps", spec.load_steps}};
+          {"load_steps", spec.load_steps},
+          {"stable_branch", spec.stable_branch}};
 }
 
 }  // namespace vascsim::io

@@ -49,7 +49,8 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   j["warnings"] = {{"newton_round_off_stop", warning(s.warnings.newton_round_off)},
                    {"step_retried", warning(s.warnings.step_retried)},
                    {"paper_contact_iteration_cap", warning(s.warnings.paper_contact_cap)},
-                   {"unstable_equilibrium", warning(s.warnings.unstable_equilibrium)}};
+                   {"unstable_equilibrium", warning(s.warnings.unstable_equilibrium)},
+                   {"left_unstable_equilibrium", warning(s.warnings.left_unstable)}};
   const State& state = run.state();
   json positions = json::array(), velocities = json::array();
   for (Eigen::Index i = 0; i < state.x.size(); i += 2) {

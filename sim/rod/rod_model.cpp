@@ -11,17 +11,17 @@ double chord_turn(double dl, double curvature) {
   return std::copysign(std::min(turn, 0.95 * M_PI), curvature);
 }
 
+// Chord i heads direction + i turn: `direction` is the first edge's heading (the clamped edge's,
+// with either clamp), not the arc's tangent at node 0, which is half a turn behind it (until
+// issue 16 the chords started from the tangent, so a clamp locked in a tilt of asin(kappa dl/2)).
 Eigen::VectorXd arc_positions(int nodes, double dl, const Vec2& first, double direction, double curvature) {
   Eigen::VectorXd x(2 * nodes);
   const double turn = chord_turn(dl, curvature);
   Vec2 p = first;
-  double heading = direction;
   for (int i = 0; i < nodes; ++i) {
     x.segment<2>(2 * i) = p;
-    // Chord i starts half a turn after the tangent at node i.
-    const double h = heading + 0.5 * turn;
+    const double h = direction + i * turn;
     p += dl * Vec2(std::cos(h), std::sin(h));
-    heading += turn;
   }
   return x;
 }

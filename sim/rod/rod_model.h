@@ -29,7 +29,8 @@ struct RodModel {
 };
 
 // The node positions of an arc (or straight line) with N nodes and uniform chord `dl`, starting
-// at `first` with heading `direction` (rad) and curvature `curvature` (1/m).
+// at `first`, the first chord heading along `direction` (rad), each next one turned by the
+// chord angle of `curvature` (1/m).
 Eigen::VectorXd arc_positions(int nodes, double dl, const Vec2& first, double direction, double curvature);
 
 // Compiles the rod. With a centred clamp the first edge straddles shape.start and the tip lies at

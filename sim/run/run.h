@@ -46,6 +46,7 @@ struct RunWarnings {
   WarningCount step_retried;          // steps that needed a smaller dt (see rejected_steps)
   WarningCount paper_contact_cap;     // paper contact: steps that hit contact.paper_iterations unsettled
   WarningCount unstable_equilibrium;  // static mode: the equilibrium found is unstable
+  WarningCount left_unstable;         // static mode: the load path's was, and the solve left it for a stable one
 };
 
 struct RunStatistics {

@@ -110,8 +110,9 @@ struct RodSpec {
 };
 
 // Initial and rest shape of the rod (sim/rod/rod_model.cpp places the nodes). The rod starts at
-// `start` (the root; the clamp centre with a centred clamp) heading along `direction`, and is an
-// arc of `initial_curvature` (0: straight; large values coil it or fold it back on itself).
+// `start` (the root; the clamp centre with a centred clamp), its first edge heading along
+// `direction`, and is an arc of `initial_curvature` (0: straight; large values coil it or fold
+// it back on itself).
 struct ShapeSpec {
   Vec2 start = Vec2(0.0, 0.0);     // m, root of the rod
   double direction = 0.0;          // rad, heading of the first edge, from +x counter-clockwise
@@ -254,6 +255,7 @@ struct SolverSpec {
   int max_iterations = 25;
   int max_halvings = 10;                 // Newton failures: retries with half the step
   int load_steps = 10;                   // static mode: initial number of load increments
+  bool stable_branch = true;             // static mode: leave an unstable equilibrium for a stable one
 };
 // The named presets (docs/accuracy.md); returns false for an unknown name. They step at a fixed
 // dt (kRetry): error control ("adaptive": "error") takes the preset's rtol, but is not yet their

@@ -1,5 +1,6 @@
 #include "sim/step/banded_ldlt.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vascsim {
@@ -150,8 +151,16 @@ LdltResult banded_block_ldlt_factor(BandedMatrix& a, double pivot_tol) {
       d = {d.a - e1.a, d.b - e1.b, d.c - e1.c, d.d - e1.d};
       set_block(band, 1, 0, l1);
     }
+    // The pivot vanishes when its smallest eigenvalue is at the round-off of the entries it was
+    // computed from: |lambda_min| <= pivot_tol * scale, the scalar test's |d_i| <= pivot_tol |A(i,i)|
+    // per eigenvalue. D is symmetric, so |lambda_max| <= |D|_inf <= sqrt 2 |lambda_max| and
+    // |det| / |D|_inf is |lambda_min| to within a factor sqrt 2, without a square root.
+    // Comparing det with scale^2 instead (as before issue 16) tested the product of the two
+    // eigenvalues: at the tip of a bent, finely meshed cantilever both are O(EI/L^3) while scale is
+    // O(EA/dl), and their product fell below 1e-13 scale^2 at a few hundred nodes.
     const double det = d.a * d.d - d.b * d.c;
-    if (!std::isfinite(det) || det == 0.0 || std::abs(det) <= pivot_tol * scale * scale) {
+    const double d_norm = std::max(std::abs(d.a) + std::abs(d.b), std::abs(d.c) + std::abs(d.d));
+    if (!std::isfinite(det) || det == 0.0 || std::abs(det) <= pivot_tol * d_norm * scale) {
       result.failed_row = 2 * i + 1;
       return result;
     }
@@ -167,6 +176,57 @@ LdltResult banded_block_ldlt_factor(BandedMatrix& a, double pivot_tol) {
   result.ok = true;
   return result;
 }
+
+namespace {
+
+// L^T x = z in place, for a block factor.
+void block_back_substitute(const BandedMatrix& factor, Eigen::VectorXd& b) {
+  const int nodes = factor.size() / 2;
+  const double* band = factor.data();
+  for (int i = nodes - 1; i >= 0; --i) {
+    double x0 = b[2 * i], x1 = b[2 * i + 1];
+    if (i + 1 < nodes) {
+      const M2 l = get_block(band, i + 1, i);
+      x0 -= l.a * b[2 * i + 2] + l.c * b[2 * i + 3];
+      x1 -= l.b * b[2 * i + 2] + l.d * b[2 * i + 3];
+    }
+    if (i + 2 < nodes) {
+      const M2 l = get_block(band, i + 2, i);
+      x0 -= l.a * b[2 * i + 4] + l.c * b[2 * i + 5];
+      x1 -= l.b * b[2 * i + 4] + l.d * b[2 * i + 5];
+    }
+    b[2 * i] = x0;
+    b[2 * i + 1] = x1;
+  }
+}
+
+// Eigen-decomposition of a symmetric 2x2 [p q; q s]: eigenvalues lo <= hi, and the unit
+// eigenvector of lo (that of hi is its perpendicular).
+struct Eigen2 {
+  double lo, hi;
+  double vx, vy;
+};
+Eigen2 eigen2(double p, double q, double s) {
+  const double mean = 0.5 * (p + s);
+  const double radius = std::hypot(0.5 * (p - s), q);
+  Eigen2 e{mean - radius, mean + radius, 1.0, 0.0};
+  // (q, lo - p) and (lo - s, q) both solve the eigen-equation; the longer is the better conditioned.
+  const double ax = q, ay = e.lo - p, bx = e.lo - s, by = q;
+  const double na = std::hypot(ax, ay), nb = std::hypot(bx, by);
+  if (na >= nb && na > 0.0) {
+    e.vx = ax / na;
+    e.vy = ay / na;
+  } else if (nb > 0.0) {
+    e.vx = bx / nb;
+    e.vy = by / nb;
+  } else if (p > s) {  // diagonal: lo is s
+    e.vx = 0.0;
+    e.vy = 1.0;
+  }
+  return e;
+}
+
+}  // namespace
 
 void banded_block_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b) {
   const int nodes = factor.size() / 2;
@@ -192,21 +252,44 @@ void banded_block_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b) {
     b[2 * i] = dinv.a * y0 + dinv.b * y1;
     b[2 * i + 1] = dinv.c * y0 + dinv.d * y1;
   }
-  // L^T x = z
-  for (int i = nodes - 1; i >= 0; --i) {
-    double x0 = b[2 * i], x1 = b[2 * i + 1];
-    if (i + 1 < nodes) {
-      const M2 l = get_block(band, i + 1, i);
-      x0 -= l.a * b[2 * i + 2] + l.c * b[2 * i + 3];
-      x1 -= l.b * b[2 * i + 2] + l.d * b[2 * i + 3];
+  block_back_substitute(factor, b);
+}
+
+// With z zero but for the block pivot's eigenvector u of a negative eigenvalue, y = L^-T z gives
+// y^T A y = z^T D z = lambda |u|^2 < 0. The stored D_i^-1 has the same eigenvectors as D_i and
+// eigenvalues of the same signs.
+Eigen::VectorXd banded_block_ldlt_negative_direction(const BandedMatrix& factor) {
+  const int nodes = factor.size() / 2;
+  const double* band = factor.data();
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(factor.size());
+  for (int i = 0; i < nodes; ++i) {
+    const M2 dinv = get_diag(band, i);
+    const Eigen2 e = eigen2(dinv.a, dinv.b, dinv.d);
+    if (e.lo < 0.0) {
+      y[2 * i] = e.vx;
+      y[2 * i + 1] = e.vy;
+      block_back_substitute(factor, y);
+      return y;
     }
-    if (i + 2 < nodes) {
-      const M2 l = get_block(band, i + 2, i);
-      x0 -= l.a * b[2 * i + 4] + l.c * b[2 * i + 5];
-      x1 -= l.b * b[2 * i + 4] + l.d * b[2 * i + 5];
-    }
-    b[2 * i] = x0;
-    b[2 * i + 1] = x1;
+  }
+  return y;
+}
+
+void banded_block_ldlt_absolute_pivots(BandedMatrix& factor) {
+  constexpr int W = BandedMatrix::kWidth;
+  const int nodes = factor.size() / 2;
+  double* band = factor.data();
+  for (int i = 0; i < nodes; ++i) {
+    const M2 dinv = get_diag(band, i);
+    const Eigen2 e = eigen2(dinv.a, dinv.b, dinv.d);
+    if (e.lo >= 0.0) continue;
+    // |D^-1| = |lo| u u^T + |hi| w w^T, w the perpendicular of u.
+    const double lo = std::abs(e.lo), hi = std::abs(e.hi);
+    double* r0 = band + static_cast<std::size_t>(2 * i) * W;
+    double* r1 = r0 + W;
+    r0[0] = lo * e.vx * e.vx + hi * e.vy * e.vy;
+    r1[1] = (lo - hi) * e.vx * e.vy;
+    r1[0] = lo * e.vy * e.vy + hi * e.vx * e.vx;
   }
 }
 

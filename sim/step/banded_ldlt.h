@@ -40,7 +40,23 @@ namespace vascsim {
 // independent 2x2 products, a shorter dependency chain than the scalar rows (the scalar
 // factorisation is latency-bound). The diagonal blocks store D_i^-1; negative_pivots counts
 // negative eigenvalues of the D_i (still the inertia of A); failed_row is 2i+1 for block i.
+// A block pivot counts as vanished when its smallest eigenvalue (in magnitude) is
+// <= pivot_tol * (|A(2i,2i)| + |A(2i+1,2i+1)| + 2 |A(2i+1,2i)|), to within a factor sqrt 2: the
+// scalar test per eigenvalue, whatever the other eigenvalue (a finely meshed bent cantilever's
+// tip pivot has both eigenvalues ~ EI/L^3, 1e-9 of the diagonal's EA/dl, and is well-posed).
 LdltResult banded_block_ldlt_factor(BandedMatrix& a, double pivot_tol = 1e-13);
 void banded_block_ldlt_solve(const BandedMatrix& factor, Eigen::VectorXd& b);
+
+// For leaving an unstable equilibrium (sim/step/stable_branch.h), given a block factor of A:
+// - a direction of negative curvature, y^T A y < 0: y = L^-T z, z the eigenvector of the first
+//   block pivot's negative eigenvalue (zero elsewhere), so y^T A y = z^T D z (the classic
+//   construction of modified-Newton methods, Gill & Murray 1974; More & Sorensen 1979). Zero if
+//   no pivot is negative.
+Eigen::VectorXd banded_block_ldlt_negative_direction(const BandedMatrix& factor);
+// - replaces every block pivot D_i by |D_i| (same eigenvectors, eigenvalue magnitudes), so that
+//   the solve applies (L |D| L^T)^-1: positive definite, and its Newton step descends an energy
+//   where A is indefinite, moving away from a saddle along its negative modes ("saddle-free
+//   Newton", Dauphin et al., NeurIPS 2014, with the modulus taken on the LDL^T pivots).
+void banded_block_ldlt_absolute_pivots(BandedMatrix& factor);
 
 }  // namespace vascsim

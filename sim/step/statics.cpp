@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "sim/step/banded_ldlt.h"
+#include "sim/step/stable_branch.h"
 #include "sim/step/stepper.h"
 
 namespace vascsim {
@@ -13,6 +14,7 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
   Eigen::VectorXd x = state.x;
   for (std::size_t d = 0; d < ws.fixed.size(); ++d)
     if (ws.fixed[d]) x[static_cast<Eigen::Index>(d)] = ws.target[static_cast<Eigen::Index>(d)];
+  const Eigen::VectorXd unloaded = x;  // the reference that signs the way off a saddle
 
   const int max_rejections = 4 * (model.solver.max_halvings + 1);
   double lambda = 0.0;
@@ -51,6 +53,20 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
     p.load_scale = 1.0;
     assemble(model, p, x, ws, true);
     report.negative_pivots = banded_block_ldlt_factor(ws.jacobian).negative_pivots;
+    if (report.negative_pivots > 0 && model.solver.stable_branch) {
+      // Newton found a saddle of the energy (a column kept straight past buckling): leave it.
+      report.unstable_pivots = report.negative_pivots;
+      ws.x = x;
+      const BranchOutcome b = descend_to_stable(model, p, ws, unloaded);
+      report.iterations += b.iterations;
+      if (b.ok) {
+        x = ws.x;
+        report.left_unstable = true;
+        report.negative_pivots = 0;
+      } else {
+        report.branch_failure = b.failure;
+      }
+    }
   }
   state.x = x;
   state.v.setZero();

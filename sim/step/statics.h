@@ -20,15 +20,22 @@ struct StaticReport {
   int rejected = 0;          // failed increments (retried smaller)
   int iterations = 0;        // Newton iterations over all increments
   double load_scale = 0.0;   // reached
-  // Negative pivots of the Newton matrix at the equilibrium found: its count of negative
+  // Negative pivots of the Newton matrix at the equilibrium returned: its count of negative
   // eigenvalues (Sylvester's law of inertia). Above 0 the equilibrium is unstable (a column
   // loaded past its buckling load stays straight, but a nudge would make it buckle).
   int negative_pivots = 0;
+  // With SolverSpec::stable_branch, when the load path ended at an unstable equilibrium: its
+  // negative pivots, and whether the solve left it for a stable one (sim/step/stable_branch.h).
+  int unstable_pivots = 0;
+  bool left_unstable = false;
+  std::string branch_failure;  // why it could not, when unstable_pivots > 0 and !left_unstable
   std::string failure;
 };
 
 // Solves from state.x; on success state.x is the equilibrium, v = 0 and the BDF2 history reset.
 // On failure state.x holds the last converged increment (load_scale in the report).
+// With model.solver.stable_branch (the default) an unstable equilibrium at full load is left for
+// a stable one; if that fails the unstable one is returned (report.ok, negative_pivots > 0).
 StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls);
 
 }  // namespace vascsim
