@@ -11,32 +11,42 @@
 
 namespace vascsim {
 
-namespace {
-
-// A node is not tested against its own edges or their neighbours: along the rod they are held
-// apart by the rod itself, and a bend sharper than that is the bending energy's business.
-bool adjacent(int node, int edge) { return node >= edge - 1 && node <= edge + 2; }
-
-}  // namespace
-
 SelfContactModule::SelfContactModule(const RodModel& rod, const ContactParams& params)
-    : nodes_(rod.nodes), thickness_(2.0 * rod.outer_radius), g_hat_(params.g_hat), kappa_(params.kappa) {}
+    : nodes_(rod.nodes), thickness_(2.0 * rod.outer_radius), g_hat_(params.g_hat), kappa_(params.kappa) {
+  arc_.assign(static_cast<std::size_t>(nodes_), 0.0);
+  for (int i = 1; i < nodes_; ++i) arc_[static_cast<std::size_t>(i)] = arc_[static_cast<std::size_t>(i - 1)] + rod.rest_length[i - 1];
+  // Straight, two points of the rod this far apart along it are this far apart in space: closer
+  // ones would start inside each other's barrier (a fine mesh has edges much shorter than the
+  // rod's thickness). Half as much again covers the bend a rod can make between them.
+  exclusion_ = 1.5 * (thickness_ + g_hat_);
+}
+
+bool SelfContactModule::adjacent(int node, int edge) const {
+  if (node >= edge - 1 && node <= edge + 2) return true;
+  const double along = node <= edge ? arc_[static_cast<std::size_t>(edge)] - arc_[static_cast<std::size_t>(node)]
+                                    : arc_[static_cast<std::size_t>(node)] - arc_[static_cast<std::size_t>(edge + 1)];
+  return along < exclusion_;
+}
 
 std::vector<std::pair<int, int>> SelfContactModule::candidate_pairs(const Eigen::VectorXd& x, double reach) const {
-  // Sweep and prune along x: each edge's x-interval, grown by `reach`, against the nodes' x.
+  // Sweep and prune along the longer side of the rod's bounding box (a rod along y would put
+  // every node in every edge's x-interval): each edge's interval on that axis, grown by
+  // `reach`, against the nodes sorted on it, then the other axis checked.
+  const Eigen::Map<const Eigen::Matrix<double, 2, Eigen::Dynamic>> p(x.data(), 2, nodes_);
+  const Eigen::Vector2d extent = p.rowwise().maxCoeff() - p.rowwise().minCoeff();
+  const int a = extent.x() >= extent.y() ? 0 : 1, b = 1 - a;
   std::vector<int> order(static_cast<std::size_t>(nodes_));
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return x[2 * a] < x[2 * b] || (x[2 * a] == x[2 * b] && a < b); });
-  std::vector<double> sorted_x(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) sorted_x[k] = x[2 * order[k]];
+  std::sort(order.begin(), order.end(), [&](int i, int j) { return p(a, i) < p(a, j) || (p(a, i) == p(a, j) && i < j); });
+  std::vector<double> sorted(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = p(a, order[k]);
   std::vector<std::pair<int, int>> pairs;
   for (int e = 0; e + 1 < nodes_; ++e) {
-    const double lo = std::min(x[2 * e], x[2 * e + 2]) - reach, hi = std::max(x[2 * e], x[2 * e + 2]) + reach;
-    const double ylo = std::min(x[2 * e + 1], x[2 * e + 3]) - reach, yhi = std::max(x[2 * e + 1], x[2 * e + 3]) + reach;
-    for (auto it = std::lower_bound(sorted_x.begin(), sorted_x.end(), lo); it != sorted_x.end() && *it <= hi; ++it) {
-      const int node = order[static_cast<std::size_t>(it - sorted_x.begin())];
-      if (adjacent(node, e)) continue;
-      if (x[2 * node + 1] < ylo || x[2 * node + 1] > yhi) continue;
+    const double lo = std::min(p(a, e), p(a, e + 1)) - reach, hi = std::max(p(a, e), p(a, e + 1)) + reach;
+    const double blo = std::min(p(b, e), p(b, e + 1)) - reach, bhi = std::max(p(b, e), p(b, e + 1)) + reach;
+    for (auto it = std::lower_bound(sorted.begin(), sorted.end(), lo); it != sorted.end() && *it <= hi; ++it) {
+      const int node = order[static_cast<std::size_t>(it - sorted.begin())];
+      if (adjacent(node, e) || p(b, node) < blo || p(b, node) > bhi) continue;
       pairs.emplace_back(node, e);
     }
   }

@@ -1,5 +1,6 @@
 // Rod self-contact (contact.self): the IPC barrier of barrier.h between every node and every
-// rod edge it is not part of or next to, at a gap of distance - 2 r_o (the two surfaces). In 2D
+// rod edge it is not part of or next to, nor closer to along the rod than 1.5 times the
+// thickness and activation distance, at a gap of distance - 2 r_o (the two surfaces). In 2D
 // two segments come closest at an end of one of them, so node-edge pairs see every edge-edge
 // approach. Its Hessian couples nodes far apart along the rod: those entries fall outside the
 // Newton matrix's band and go to ForceContext::off_band, which makes Newton solve that step with
@@ -8,6 +9,8 @@
 // descent direction. Pairs are found by a sort on x (sweep and prune), so a rod that does not
 // touch itself costs O(N log N) per evaluation. Channel force/contact.
 #pragma once
+
+#include <vector>
 
 #include "sim/contact/contact_params.h"
 #include "sim/log/channel_names.h"
@@ -28,9 +31,14 @@ class SelfContactModule : public ForceModule {
   std::vector<std::pair<int, int>> candidate_pairs(const Eigen::VectorXd& x, double reach) const;
 
  private:
+  // Whether a node and an edge are too close along the rod to be a contact pair.
+  bool adjacent(int node, int edge) const;
+
   int nodes_;
   double thickness_;  // m, 2 r_o
   double g_hat_, kappa_;
+  std::vector<double> arc_;  // m, (N), rest arc length from the root to each node
+  double exclusion_ = 0.0;   // m
 };
 
 }  // namespace vascsim
