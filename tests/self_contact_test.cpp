@@ -74,6 +74,20 @@ TEST(SelfContact, ARodFedIntoAClosedChamberCoilsWithoutCrossingItself) {
   EXPECT_GT(without.frames_with_crossings, 0) << "without self-contact the rod should pass through itself here";
 }
 
+// Edges much shorter than the rod's thickness (400 nodes over 0.5 m: 1.25 mm edges, 4 mm thick):
+// points a few edges apart are closer than the thickness and must not be pairs, or the straight
+// rod would start inside its own barrier (it did: "the rod blew up" at t = 0).
+TEST(SelfContact, AFineMeshDoesNotStartInsideItsOwnBarrier) {
+  const Scene scene = read_scene_text(R"({"maze": null, "rod": {"nodes": 400}, "boundary": {"clamp": "first_edge"},
+      "contact": {"self": true}, "loads": {"point": [{"node": -1, "force": [0, -1e-4]}]}, "run": {"duration": 0.02}})",
+                                      "fine.json");
+  vascsim::Run run(compile(scene));
+  CrossingCounter counter;
+  counter.nodes = 400;
+  EXPECT_TRUE(run.run(counter)) << run.statistics().failure;
+  EXPECT_EQ(counter.frames_with_crossings, 0);
+}
+
 TEST(SelfContact, RefusedInStaticMode) {
   EXPECT_THROW(read_scene_text(R"({"maze": null, "contact": {"self": true}, "solver": {"mode": "static"}})", "s.json"),
                InputError);
