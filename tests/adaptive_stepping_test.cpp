@@ -12,6 +12,7 @@
 #include "sim/run/run.h"
 #include "sim/step/local_error.h"
 #include "sim/step/stepper.h"
+#include "tests/rod_test_scenes.h"
 
 namespace vascsim {
 namespace {
@@ -19,19 +20,7 @@ namespace {
 constexpr double kOmega = 2 * M_PI;  // rad/s
 constexpr double kAmplitude = 0.01;  // m
 
-Scene oscillator(Scheme scheme) {
-  Scene scene;
-  scene.has_environment = false;
-  scene.rod.nodes = 3;
-  scene.rod.length = 1.0;
-  scene.rod.density = 1000.0;
-  const double l0 = 0.5;
-  scene.rod.youngs_modulus = 2.0 * M_PI * M_PI * scene.rod.density * l0 * l0;
-  scene.boundary.clamp = ClampKind::kFirstEdge;
-  scene.solver.scheme = scheme;
-  scene.solver.rel_tol = 1e-13;
-  return scene;
-}
+Scene oscillator(Scheme scheme) { return test::axial_oscillator(scheme, 1e-13); }
 
 // The exact state at t: node 2 at x = 1 + A cos(w t) (at rest length 1 m from the root).
 State exact_state(const Model& model, double t) {

@@ -111,15 +111,16 @@ TEST(SweepCli, AFailedRunIsARowAndIsRetriedOnlyWhenAsked) {
 
 TEST(SweepCli, CtrlCStopsCleanlyAndAResumeGivesTheSameTable) {
   const std::string dir = fresh_temp_dir("sweep_interrupt");
-  // One short run, then long ones: the signal is sent when the short one has completed, so
-  // some are completed and some running when it lands, however fast the machine.
+  // One short run, then long ones: the signal is sent when the sweep has recorded the short one
+  // (its status.json), so some are completed and some running when it lands, however fast the
+  // machine.
   const std::string sweep = dir + "/durations.json";
   write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
                         R"(", "axes": {"/run/duration": [0.2, 20, 20, 20], "/control/kp": [4]}})");
   // kill signals the sweep alone (not its process group): the sweep must pass it on.
   const CommandResult r = run_shell("{ " + std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + dir +
                                     "/out --jobs 2 & pid=$!; "
-                                    "until [ -e " + dir + "/out/runs/0000/summary.json ]; do sleep 0.01; done; "
+                                    "until [ -e " + dir + "/out/runs/0000/status.json ]; do sleep 0.01; done; "
                                     "kill -INT $pid; wait $pid; echo \"exit code $?\"; }");
   ASSERT_TRUE(has(r.output, "exit code 130")) << r.output;
   EXPECT_TRUE(has(r.output, "interrupted")) << r.output;
@@ -127,7 +128,9 @@ TEST(SweepCli, CtrlCStopsCleanlyAndAResumeGivesTheSameTable) {
   for (int i = 0; i < 4; ++i) {
     const std::string run = dir + "/out/runs/000" + std::to_string(i);
     const bool summary = fs::exists(run + "/summary.json"), status = fs::exists(run + "/status.json");
-    EXPECT_EQ(summary, status) << run << ": a completed run has both, an interrupted one neither";
+    // A recorded run has its summary. (A run stopped after writing its summary, before it exited,
+    // has no status.json and still counts as completed: summary.json is written last.)
+    EXPECT_TRUE(summary || !status) << run << ": a status without a summary";
     completed += summary;
     stopped += !summary && fs::exists(run + "/frames.vlog");
   }

@@ -14,20 +14,13 @@
 #include "sim/scene/input_error.h"
 #include "sim/step/model.h"
 #include "sim/step/stepper.h"
+#include "tests/rod_test_scenes.h"
 
 namespace vascsim {
 namespace {
 
 Scene oscillator_with_body(double body_mass, double linear_drag) {
-  Scene scene;
-  scene.has_environment = false;
-  scene.rod.nodes = 3;
-  scene.rod.length = 1.0;
-  scene.rod.density = 1000.0;
-  scene.rod.youngs_modulus = 2.0 * M_PI * M_PI * scene.rod.density * 0.25;  // k / m = (2 pi)^2 without the body
-  scene.boundary.clamp = ClampKind::kFirstEdge;
-  scene.solver.scheme = Scheme::kBdf2;
-  scene.solver.rel_tol = 1e-12;
+  Scene scene = test::axial_oscillator(Scheme::kBdf2);  // k / m = (2 pi)^2 without the body
   scene.loads.bodies.push_back({2, body_mass, linear_drag, 0.0});
   return scene;
 }

@@ -18,24 +18,11 @@
 namespace vascsim {
 namespace {
 
-// Three collinear nodes with the first edge clamped: node 2 on the last edge moving along the
-// axis is an exactly linear spring k = EA/l0 (docs/references.md section 5) with mass m = rho A l0 / 2, and
-// k/m = 2 E / (rho l0^2) = (2 pi)^2 by the choice of E.
+// The axial oscillator of tests/rod_test_scenes.h (k/m = (2 pi)^2), started displaced.
 struct Oscillator {
   Scene scene;
-  double amplitude;  // m, initial displacement of node 2
-  Oscillator(Scheme scheme) {
-    scene.has_environment = false;
-    scene.rod.nodes = 3;
-    scene.rod.length = 1.0;
-    scene.rod.density = 1000.0;
-    const double l0 = 0.5;
-    scene.rod.youngs_modulus = 2.0 * M_PI * M_PI * scene.rod.density * l0 * l0;
-    scene.boundary.clamp = ClampKind::kFirstEdge;
-    scene.solver.scheme = scheme;
-    scene.solver.rel_tol = 1e-12;
-    amplitude = 0.01;
-  }
+  double amplitude = 0.01;  // m, initial displacement of node 2
+  explicit Oscillator(Scheme scheme) : scene(test::axial_oscillator(scheme)) {}
   // Displacement of node 2 divided by the amplitude after `steps` steps of dt.
   double run(double dt, int steps, double* velocity = nullptr) const {
     const Model model = *compile(scene);

@@ -17,6 +17,23 @@ inline Scene cantilever(int nodes) {
   return s;
 }
 
+// Three collinear nodes along +x with the first edge clamped: node 2 on the last edge moving along
+// the axis is an exactly linear spring k = EA/l0 (docs/references.md section 5) with mass
+// m = rho A l0 / 2, and k/m = 2 E / (rho l0^2) = (2 pi)^2 by the choice of E. Node 2 rests at x = 1 m.
+inline Scene axial_oscillator(Scheme scheme, double newton_rel_tol = 1e-12) {
+  Scene s;
+  s.has_environment = false;
+  s.rod.nodes = 3;
+  s.rod.length = 1.0;
+  s.rod.density = 1000.0;
+  const double l0 = 0.5;  // m, edge length
+  s.rod.youngs_modulus = 2.0 * 3.14159265358979323846 * 3.14159265358979323846 * s.rod.density * l0 * l0;
+  s.boundary.clamp = ClampKind::kFirstEdge;
+  s.solver.scheme = scheme;
+  s.solver.rel_tol = newton_rel_tol;
+  return s;
+}
+
 inline double bending_stiffness(const RodSpec& r) {
   const double ro2 = r.outer_radius * r.outer_radius, ri2 = r.inner_radius * r.inner_radius;
   return r.youngs_modulus * 3.14159265358979323846 * (ro2 * ro2 - ri2 * ri2) / 4.0;
