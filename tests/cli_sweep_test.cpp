@@ -112,15 +112,15 @@ TEST(SweepCli, AFailedRunIsARowAndIsRetriedOnlyWhenAsked) {
 TEST(SweepCli, CtrlCStopsCleanlyAndAResumeGivesTheSameTable) {
   const std::string dir = fresh_temp_dir("sweep_interrupt");
   // One short run, then long ones: the signal is sent when the sweep has recorded the short one
-  // (its status.json), so some are completed and some running when it lands, however fast the
-  // machine.
+  // (its status.json) and the first long one is writing its log, so some are completed and some
+  // running when it lands, however fast the machine.
   const std::string sweep = dir + "/durations.json";
   write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
                         R"(", "axes": {"/run/duration": [0.2, 20, 20, 20], "/control/kp": [4]}})");
   // kill signals the sweep alone (not its process group): the sweep must pass it on.
   const CommandResult r = run_shell("{ " + std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + dir +
                                     "/out --jobs 2 & pid=$!; "
-                                    "until [ -e " + dir + "/out/runs/0000/status.json ]; do sleep 0.01; done; "
+                                    "until [ -e " + dir + "/out/runs/0000/status.json ] && [ -e " + dir + "/out/runs/0001/frames.vlog ]; do sleep 0.01; done; "
                                     "kill -INT $pid; wait $pid; echo \"exit code $?\"; }");
   ASSERT_TRUE(has(r.output, "exit code 130")) << r.output;
   EXPECT_TRUE(has(r.output, "interrupted")) << r.output;
