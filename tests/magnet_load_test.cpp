@@ -43,12 +43,8 @@ Equilibrium solve(double a, double phi, int nodes) {
   scene.loads.magnet.field = a * ei / (l * scene.loads.magnet.moment);
   scene.loads.magnet.angle = phi;
   scene.solver.load_steps = 20;
-  const Model model = *compile(scene);
-  State state = initial_state(model);
-  Workspace ws(model);
-  const StaticReport r = solve_static(model, state, ws, Controls{});
-  EXPECT_TRUE(r.ok) << r.failure;
-  const int n = model.nodes();
+  const State state = test::static_equilibrium(scene);
+  const int n = scene.rod.nodes;
   const Eigen::Vector2d last = state.position(n - 1) - state.position(n - 2);
   // Turning angle between consecutive edges from node 2 on (the centred clamp holds the first).
   std::vector<double> turn;

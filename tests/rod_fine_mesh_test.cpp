@@ -24,11 +24,8 @@ constexpr int kNodes = 2001;
 State solve_cantilever(const Scene& scene, const PointLoadSpec& tip) {
   Scene s = scene;
   s.loads.point_loads.push_back(tip);
-  const Model model = *compile(s);
-  State state = initial_state(model);
-  Workspace ws(model);
-  const StaticReport r = solve_static(model, state, ws, Controls{});
-  EXPECT_TRUE(r.ok) << r.failure;
+  StaticReport r;
+  const State state = test::static_equilibrium(s, &r);
   EXPECT_EQ(r.negative_pivots, 0) << "a cantilever's equilibrium is stable";
   return state;
 }

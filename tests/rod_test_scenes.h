@@ -2,7 +2,11 @@
 // free space, with the knobs the tests turn.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include "sim/run/compile.h"
 #include "sim/scene/scene.h"
+#include "sim/step/statics.h"
 
 namespace vascsim::test {
 
@@ -32,6 +36,17 @@ inline Scene axial_oscillator(Scheme scheme, double newton_rel_tol = 1e-12) {
   s.solver.scheme = scheme;
   s.solver.rel_tol = newton_rel_tol;
   return s;
+}
+
+// The static equilibrium of a (static mode) scene; a failed solve fails the calling test.
+inline State static_equilibrium(const Scene& scene, StaticReport* report = nullptr) {
+  const Model model = *compile(scene);
+  State state = initial_state(model);
+  Workspace ws(model);
+  const StaticReport r = solve_static(model, state, ws, Controls{});
+  EXPECT_TRUE(r.ok) << r.failure;
+  if (report) *report = r;
+  return state;
 }
 
 inline double bending_stiffness(const RodSpec& r) {
