@@ -98,8 +98,9 @@ struct ControlledRun {
   RunStatistics stats;
 };
 
-ControlledRun pulled_oscillator(Scheme scheme, double rtol) {
+ControlledRun pulled_oscillator(Scheme scheme, double rtol, double dt_floor = 0.0) {
   Scene scene = oscillator(scheme);
+  scene.solver.dt_floor = dt_floor;
   scene.solver.adaptive = StepControl::kError;
   scene.solver.rtol = rtol;
   scene.solver.atol_position = 0.0;
@@ -157,6 +158,23 @@ TEST(ErrorControl, StepsGrowFromATinyFirstStepAndFramesLandOnOutputTimes) {
   const ControlledRun r = pulled_oscillator(Scheme::kBdf2, 1e-4);
   EXPECT_GT(r.stats.dt_max, 50 * 1e-4) << "the first step was 1e-4 s";
   EXPECT_EQ(r.stats.frames, 61u);
+}
+
+// A floor (solver.dt_floor, the presets' bound on cost) keeps every chosen step at or above it
+// and the steps it had to keep over the tolerance are counted; without it the same tolerance
+// takes shorter steps. Output times still cut steps, so the shortest may be such a cut.
+TEST(ErrorControl, AFloorBoundsTheStepAndCountsWhatItKeepsOverTheTolerance) {
+  const double floor = 0.01;  // s
+  const ControlledRun free = pulled_oscillator(Scheme::kBdf2, 1e-6);
+  const ControlledRun floored = pulled_oscillator(Scheme::kBdf2, 1e-6, floor);
+  ASSERT_LT(free.stats.dt_max, floor) << "the tolerance must need steps below the floor";
+  EXPECT_GE(floored.stats.dt_max, floor);
+  EXPECT_LT(floored.stats.steps, free.stats.steps / 2);
+  EXPECT_GT(floored.stats.warnings.step_over_tolerance.count, floored.stats.steps / 2);
+  EXPECT_EQ(free.stats.warnings.step_over_tolerance.count, 0);
+  EXPECT_LE(floored.stats.error_max, 1.0) << "error_max reports the steps within the tolerance";
+  // The error grows with the step, as a fixed step of the floor's size would give.
+  EXPECT_GT(floored.error, 10 * free.error);
 }
 
 }  // namespace

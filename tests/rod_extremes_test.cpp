@@ -5,7 +5,12 @@
 // the sanitizers.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
 #include "sim/run/compile.h"
+#include "sim/run/run.h"
 #include "sim/step/model.h"
 #include "sim/step/statics.h"
 #include "sim/step/stepper.h"
@@ -41,6 +46,52 @@ void run_case(const Scene& scene, double dt, int steps, const char* label) {
     }
     EXPECT_LE(r.residual, scene.solver.rel_tol) << label;
   }
+}
+
+// The same cases with the default step control (the balanced preset: error control with a
+// floor), through a whole run: each ends its short run or stops with a message, never with a
+// non-finite frame.
+void run_controlled_case(Scene scene, double duration, const char* label) {
+  apply_solver_preset("balanced", scene.solver);
+  scene.run.duration = duration;
+  scene.run.output_interval = duration / 4;
+  Run run(compile(scene));
+  struct FiniteSink : FrameSink {
+    void write(double, const std::vector<double>& values) override {
+      for (double v : values) finite = finite && std::isfinite(v);
+    }
+    bool finite = true;
+  } sink;
+  const bool ok = run.run(sink);
+  EXPECT_TRUE(sink.finite) << label;
+  ASSERT_TRUE(run.state().x.allFinite() && run.state().v.allFinite()) << label;
+  if (!ok) {
+    EXPECT_FALSE(run.statistics().failure.empty()) << label;
+    std::printf("[ %s, error control ] stopped cleanly: %s\n", label, run.statistics().failure.c_str());
+  } else {
+    EXPECT_GE(run.state().t, duration * (1 - 1e-9)) << label;
+  }
+}
+
+TEST(RodExtremes, EveryCaseUnderErrorControl) {
+  run_controlled_case(loaded_cantilever(21, 2.0), 0.05, "alpha 2");
+  for (double e : {1e3, 2e11}) {
+    Scene s = loaded_cantilever(21, 2.0);
+    s.rod.youngs_modulus = e;
+    const double l = s.rod.length;
+    s.loads.point_loads[0].force = Vec2(0.0, -2.0 * test::bending_stiffness(s.rod) / (l * l));
+    run_controlled_case(s, 0.01, e < 1e6 ? "E 1e3" : "E 2e11");
+  }
+  run_controlled_case(loaded_cantilever(3, 2.0), 0.05, "N 3");
+  run_controlled_case(loaded_cantilever(2000, 2.0), 0.004, "N 2000");
+  run_controlled_case(loaded_cantilever(41, 20.0), 0.02, "alpha 20");
+  Scene coiled;
+  coiled.has_environment = false;
+  coiled.rod.nodes = 60;
+  coiled.shape.initial_curvature = 1.0 / 0.02;
+  run_controlled_case(coiled, 0.01, "coiled");
+  coiled.shape.initial_curvature = 1e6;
+  run_controlled_case(coiled, 0.01, "folded");
 }
 
 TEST(RodExtremes, TimeSteps) {

@@ -15,7 +15,22 @@ TEST(SolverSections, PresetThenExplicitOverride) {
   EXPECT_EQ(s.solver.scheme, Scheme::kBdf2);
   EXPECT_EQ(s.solver.dt, 4e-3);
   EXPECT_EQ(s.solver.rel_tol, 1e-7);
-  EXPECT_EQ(s.solver.adaptive, StepControl::kRetry);
+  // The presets control the error, with their former fixed step as the floor and first step.
+  EXPECT_EQ(s.solver.adaptive, StepControl::kError);
+  EXPECT_EQ(s.solver.dt_floor, 4e-3);
+  EXPECT_EQ(read_scene_text(R"({"maze": null})", "t.json").solver.rtol, 1.5e-4);
+  // A scene that gives its dt and not its step control steps at that dt, as it did before.
+  const Scene d = read_scene_text(R"({"maze": null, "solver": {"preset": "accurate", "dt": 1e-4}})", "t.json");
+  EXPECT_EQ(d.solver.adaptive, StepControl::kRetry);
+  EXPECT_EQ(d.solver.dt, 1e-4);
+  EXPECT_EQ(read_scene_text(R"({"maze": null, "solver": {"dt": 1e-4, "adaptive": "error"}})", "t.json").solver.adaptive,
+            StepControl::kError);
+  try {
+    read_scene_text(R"({"maze": null, "solver": {"dt_floor": 0.5}})", "t.json");
+    ADD_FAILURE() << "a floor above dt_max was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/solver/dt_floor"), std::string::npos) << e.what();
+  }
   const Scene e = read_scene_text(R"({"maze": null, "solver": {"adaptive": "error", "rtol": 1e-5}})", "t.json");
   EXPECT_EQ(e.solver.adaptive, StepControl::kError);
   EXPECT_EQ(e.solver.rtol, 1e-5);

@@ -32,7 +32,10 @@ void read_solver(FieldReader& in, SolverSpec& out) {
   const std::string scheme =
       in.choice("scheme", out.scheme == Scheme::kBdf2 ? "bdf2" : "backward_euler", {"backward_euler", "bdf2"});
   out.scheme = scheme == "bdf2" ? Scheme::kBdf2 : Scheme::kBackwardEuler;
-  out.adaptive = read_step_control(in, out.adaptive);
+  // A scene that names its dt and not its step control means that step: fixed, as before presets
+  // chose steps by error.
+  const bool fixed_dt = in.raw("dt") && !in.raw("adaptive");
+  out.adaptive = read_step_control(in, fixed_dt ? StepControl::kRetry : out.adaptive);
   out.dt = in.positive("dt", out.dt, 10.0);
   out.rtol = in.number("rtol", out.rtol, 0.0, 1.0);
   out.atol_position = in.number("atol_position", out.atol_position, 0.0, 1.0);
@@ -42,6 +45,7 @@ void read_solver(FieldReader& in, SolverSpec& out) {
             in.raw("rtol") ? *in.raw("rtol") : nlohmann::json(out.rtol));
   out.dt_max = in.positive("dt_max", out.dt_max, 10.0);
   out.dt_min = in.positive("dt_min", out.dt_min, out.dt_max);
+  out.dt_floor = in.number("dt_floor", out.dt_floor, 0.0, out.dt_max);
   out.rel_tol = in.positive("rel_tol", out.rel_tol, 1.0);
   out.abs_tol = in.number("abs_tol", out.abs_tol, 0.0, 1e9);
   out.step_tol = in.positive("step_tol", out.step_tol, 1.0);
@@ -66,6 +70,7 @@ json write_solver(const SolverSpec& spec) {
           {"atol_position", spec.atol_position},
           {"atol_velocity", spec.atol_velocity},
           {"dt_min", spec.dt_min},
+          {"dt_floor", spec.dt_floor},
           {"dt_max", spec.dt_max},
           {"max_halvings", spec.max_halvings},
           {"load_steps", spec.load_steps},

@@ -48,6 +48,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   auto warning = [](const WarningCount& w) { return json{{"count", w.count}, {"first_time", number(w.first_time)}}; };
   j["warnings"] = {{"newton_round_off_stop", warning(s.warnings.newton_round_off)},
                    {"step_retried", warning(s.warnings.step_retried)},
+                   {"step_over_tolerance", warning(s.warnings.step_over_tolerance)},
                    {"paper_contact_iteration_cap", warning(s.warnings.paper_contact_cap)},
                    {"unstable_equilibrium", warning(s.warnings.unstable_equilibrium)},
                    {"left_unstable_equilibrium", warning(s.warnings.left_unstable)}};

@@ -68,10 +68,12 @@ void QuadraticDragModule::add_isotropic(const ForceContext& ctx, Eigen::Ref<Eige
 void QuadraticDragModule::add_cross_flow(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force,
                                          BandedMatrix* stiffness) const {
   const Eigen::VectorXd& v = *ctx.v;
-  const Eigen::VectorXd& shape = ctx.start ? ctx.start->x : *ctx.x;
+  // The tangents' configuration (loads.h): the step's start carried to its end.
+  const double h = ctx.start ? ctx.t - ctx.start->t : 0.0;  // s, the step (0: a committed state)
+  const Eigen::VectorXd x = h > 0.0 ? Eigen::VectorXd(ctx.start->x + h * ctx.start->v) : *ctx.x;
   const int nodes = static_cast<int>(c_.size());
   for (int i = 0; i < nodes; ++i) {
-    const Vec2 t = node_tangent(shape, i, nodes);
+    const Vec2 t = node_tangent(x, i, nodes);
     const Vec2 n(-t.y(), t.x());
     const Vec2 vi = v.segment<2>(2 * i);
     const double vt = vi.dot(t), vn = vi.dot(n);

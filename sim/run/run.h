@@ -44,6 +44,7 @@ struct WarningCount {
 struct RunWarnings {
   WarningCount newton_round_off;      // steps whose Newton stopped at round-off, not at rel_tol
   WarningCount step_retried;          // steps that needed a smaller dt (see rejected_steps)
+  WarningCount step_over_tolerance;   // error control: steps at solver.dt_floor kept over the tolerance
   WarningCount paper_contact_cap;     // paper contact: steps that hit contact.paper_iterations unsettled
   WarningCount unstable_equilibrium;  // static mode: the equilibrium found is unstable
   WarningCount left_unstable;         // static mode: the load path's was, and the solve left it for a stable one
@@ -55,7 +56,7 @@ struct RunStatistics {
   int newton_iterations_max = 0;     // in one step
   int rejected_steps = 0;            // attempts retried with a smaller dt (Newton failed)
   int error_rejected_steps = 0;      // error control: converged steps over the tolerance, retried shorter
-  double error_max = 0.0;            // error control: largest accepted error estimate / tolerance
+  double error_max = 0.0;            // error control: largest accepted error estimate / tolerance (above the floor)
   double dt_min = std::numeric_limits<double>::infinity();  // s, shortest step taken
   double dt_max = 0.0;               // s, longest step taken
   std::size_t frames = 0;
