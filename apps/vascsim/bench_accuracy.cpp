@@ -6,15 +6,20 @@
 //     1 and 2; mode shapes normalised so that the integral of phi^2 is L and |phi(L)| = 2).
 //     Error: the largest |y_tip - exact| over t = 0.1, 0.2, .. T, relative to P L^3 / (3 EI).
 //   static: the elastica at alpha = 1 (docs/references.md section 1 table) against N.
-// Prints a table and the Pareto front (no faster run is more accurate), writes all rows as CSV.
+//   traversals: the shipped maze scenes, whole runs at fixed steps, presets and tolerances
+//     (bench_accuracy_traversal.h).
+// Prints tables and Pareto fronts (no faster run is more accurate), writes all rows as CSV.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 
+#include "apps/vascsim/bench_accuracy_traversal.h"
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
+#include "sim/io/scene_reader.h"
 #include "sim/run/compile.h"
 #include "sim/run/run.h"
 #include "sim/scene/input_error.h"
@@ -115,23 +120,20 @@ Row dynamic_row(int nodes, Scheme scheme, double dt, double rel_tol, double dura
   return row;
 }
 
-// The same problem with error-controlled steps (solver.adaptive "error", rtol), run through Run so
-// that the step-size controller, output cuts and statistics are the product's. "dt" is the mean
-// step taken.
-Row adaptive_row(int nodes, Scheme scheme, double rtol, double rel_tol, double duration) {
+// The same problem with the solver settings `apply` makes (error control, a preset), run through
+// Run so that the step-size controller, output cuts and statistics are the product's. "dt" is the
+// mean step taken.
+Row controlled_row(int nodes, const std::string& name, const std::function<void(SolverSpec&)>& apply, double duration) {
   const StepLoadReference ref;
-  Scene scene = cantilever(nodes, scheme, 1e-4, rel_tol, ref.p);
-  scene.solver.adaptive = StepControl::kError;
-  scene.solver.rtol = rtol;
+  Scene scene = cantilever(nodes, Scheme::kBdf2, 1e-4, 1e-6, ref.p);
+  apply(scene.solver);
   scene.run.duration = duration;
   scene.run.output_interval = 0.1;
   Row row;
   row.problem = "cantilever_step_load";
-  char name[64];
-  std::snprintf(name, sizeof name, "%s/err %.0e", scheme == Scheme::kBdf2 ? "bdf2" : "backward_euler", rtol);
   row.scheme = name;
   row.nodes = nodes;
-  row.rel_tol = rel_tol;
+  row.rel_tol = scene.solver.rel_tol;
   struct TipError : FrameSink {
     const StepLoadReference* ref;
     int tip_y;
@@ -150,6 +152,22 @@ Row adaptive_row(int nodes, Scheme scheme, double rtol, double rel_tol, double d
   row.dt = s.steps ? s.simulated_time / s.steps : 0.0;
   row.iterations = s.steps ? static_cast<double>(s.newton_iterations) / s.steps : 0.0;
   return row;
+}
+
+Row adaptive_row(int nodes, Scheme scheme, double rtol, double rel_tol, double duration) {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s/err %.0e", scheme == Scheme::kBdf2 ? "bdf2" : "backward_euler", rtol);
+  return controlled_row(nodes, name, [&](SolverSpec& s) {
+    s.scheme = scheme;
+    s.rel_tol = rel_tol;
+    s.adaptive = StepControl::kError;
+    s.rtol = rtol;
+  }, duration);
+}
+
+// A solver preset as it stands (docs/accuracy.md, "Presets").
+Row preset_row(int nodes, const std::string& preset, double duration) {
+  return controlled_row(nodes, "bdf2/preset " + preset, [&](SolverSpec& s) { apply_solver_preset(preset, s); }, duration);
 }
 
 Row static_row(int nodes, double rel_tol) {
@@ -191,7 +209,9 @@ int run_bench_accuracy(int argc, char** argv) {
   const std::vector<OptionSpec> options = {
       {"csv", "FILE", "write every row as CSV (default accuracy.csv)"},
       {"duration", "T", "simulated time of the dynamic problem, s (default 10: one period of mode 1)"},
-      {"quick", "", "a small sweep (for tests)"},
+      {"quick", "", "a small sweep (for tests): no traversals"},
+      {"scenes", "DIR", "where maze_body_drag.json and maze_default.json are (default scenes)"},
+      {"traversal-csv", "FILE", "write the traversal rows as CSV (default traversal.csv)"},
       {"help", "", "this text"},
   };
   const Args args(argc, argv, 3, options);
@@ -226,6 +246,11 @@ int run_bench_accuracy(int argc, char** argv) {
         rows.push_back(adaptive_row(n, scheme, rtol, 1e-6, quick ? 0.5 : duration));
         print_row(rows.back());
       }
+  for (int n : node_counts)
+    for (const char* preset : {"fast", "balanced", "accurate"}) {
+      rows.push_back(preset_row(n, preset, quick ? 0.5 : duration));
+      print_row(rows.back());
+    }
   for (int n : quick ? std::vector<int>{11, 21} : std::vector<int>{11, 21, 41, 81, 161}) {
     rows.push_back(static_row(n, 1e-10));
     print_row(rows.back());
@@ -252,10 +277,10 @@ int run_bench_accuracy(int argc, char** argv) {
   std::printf("%-24s %6s %11s %11s   %-28s %11s %8s\n", "controlled", "N", "error", "wall [s]", "best fixed (scheme, dt)",
               "wall [s]", "speedup");
   for (const auto& a : dynamic) {
-    if (a.scheme.find("/err") == std::string::npos) continue;
+    if (a.scheme.find("/err") == std::string::npos && a.scheme.find("/preset") == std::string::npos) continue;
     const Row* best_fixed = nullptr;
     for (const auto& f : dynamic)
-      if (f.scheme.find("/err") == std::string::npos && f.nodes == a.nodes && f.error <= a.error &&
+      if (f.scheme.find('/') == std::string::npos && f.nodes == a.nodes && f.error <= a.error &&
           (!best_fixed || f.wall_time < best_fixed->wall_time))
         best_fixed = &f;
     char fixed[64] = "none as accurate";
@@ -275,6 +300,29 @@ int run_bench_accuracy(int argc, char** argv) {
     out << line;
   }
   std::printf("\nwrote %s\n", csv.c_str());
+  if (quick) return 0;
+
+  // The maze traversals (bench_accuracy_traversal.h).
+  const std::string scenes = args.value("scenes").value_or("scenes");
+  const std::string traversal_csv = args.value("traversal-csv").value_or("traversal.csv");
+  std::ofstream tout(traversal_csv);
+  if (!tout) throw InputError(traversal_csv + ": cannot write CSV");
+  tout << "scene,stepping,mean_dt,steps,newton_per_step,wall_time,real_time,body_deviation_m,goal_time,tip_rms_m,"
+          "tip_max_m,contact_force_max_N,steps_over_tolerance,ok\n";
+  for (const char* name : {"maze_body_drag", "maze_default"}) {
+    std::printf("\nTraversal of %s/%s.json (48 s; body deviation against the reference run):\n", scenes.c_str(), name);
+    print_traversal_header();
+    const std::vector<TraversalRow> traversal =
+        traversal_rows(read_scene_file(scenes + "/" + name + ".json"), [](const TraversalRow& r) { print_traversal_row(r); });
+    print_traversal_comparison(traversal);
+    for (const auto& r : traversal) {
+      std::snprintf(line, sizeof line, "%s,%s,%.6g,%d,%.4g,%.6e,%.6g,%.6e,%.6f,%.6e,%.6e,%.6e,%d,%d\n", r.scene.c_str(),
+                    r.stepping.c_str(), r.mean_dt, r.steps, r.newton_per_step, r.wall_time, r.real_time, r.body_deviation,
+                    r.goal_time, r.tip_rms, r.tip_max, r.contact_force_max, r.steps_over_tolerance, r.ok ? 1 : 0);
+      tout << line;
+    }
+  }
+  std::printf("\nwrote %s\n", traversal_csv.c_str());
   return 0;
 }
 

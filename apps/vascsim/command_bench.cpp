@@ -18,7 +18,7 @@ struct Benchmark {
 const std::vector<Benchmark>& benchmarks() {
   static const std::vector<Benchmark> table = {
       {"speed", "rod core: time per Newton iteration and per step, N = 10 .. 100000", run_bench_speed},
-      {"accuracy", "rod core: error against wall time over dt, N, tolerance and scheme (CSV)", run_bench_accuracy},
+      {"accuracy", "error against wall time: rod references over dt, N, tolerance, scheme and preset; the maze traversals (CSV)", run_bench_accuracy},
       {"traversal", "full maze traversal: wall time and real-time factor per preset", run_bench_traversal},
       {"sweep", "sweep overhead per run (expand, process start, merge) on 100 tiny runs; --jobs 2 utilisation", run_bench_sweep},
 #ifdef VASCSIM_HAVE_RENDER

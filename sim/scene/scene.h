@@ -271,7 +271,7 @@ inline bool apply_solver_preset(const std::string& name, SolverSpec& s) {
   s.atol_position = 1e-6;
   s.dt_max = 0.02;
   if (name == "fast") { s.dt = s.dt_floor = 4e-3; s.rtol = 1e-3; s.atol_velocity = 1e-3; s.rel_tol = 1e-4; }
-  else if (name == "balanced") { s.dt = s.dt_floor = 1e-3; s.rtol = 1.5e-4; s.atol_velocity = 1e-3; s.rel_tol = 1e-6; }
+  else if (name == "balanced") { s.dt = s.dt_floor = 1e-3; s.rtol = 1.5e-4; s.atol_velocity = 1e-3; s.rel_tol = 1e-5; }
   else if (name == "accurate") { s.dt = s.dt_floor = 2.5e-4; s.rtol = 1e-5; s.atol_velocity = 1e-4; s.rel_tol = 1e-8; }
   else return false;
   s.preset = name;

@@ -1,0 +1,153 @@
+#include "apps/vascsim/bench_accuracy_traversal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "sim/run/compile.h"
+#include "sim/run/run.h"
+
+namespace vascsim::cli {
+
+namespace {
+
+// Keeps every frame's node positions (the first channel of a frame).
+class PositionRecorder : public FrameSink {
+ public:
+  explicit PositionRecorder(int nodes) : dofs_(2 * static_cast<std::size_t>(nodes)) {}
+  void write(double, const std::vector<double>& values) override {
+    frames_.emplace_back(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(dofs_));
+  }
+  const std::vector<std::vector<double>>& frames() const { return frames_; }
+
+ private:
+  std::size_t dofs_;
+  std::vector<std::vector<double>> frames_;
+};
+
+double largest_node_distance(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b) {
+  double worst = 0.0;
+  for (std::size_t f = 0; f < std::min(a.size(), b.size()); ++f)
+    for (std::size_t d = 0; d + 1 < a[f].size(); d += 2)
+      worst = std::max(worst, std::hypot(a[f][d] - b[f][d], a[f][d + 1] - b[f][d + 1]));
+  return worst;
+}
+
+struct Setting {
+  std::string label;
+  bool fixed;
+  std::function<void(SolverSpec&)> apply;
+};
+
+std::vector<Setting> settings() {
+  std::vector<Setting> s;
+  for (double dt : {1e-2, 4e-3, 2e-3, 1e-3, 2.5e-4}) {
+    char label[32];
+    std::snprintf(label, sizeof label, "fixed %.2g", dt);
+    s.push_back({label, true, [dt](SolverSpec& v) {
+                   v.adaptive = StepControl::kRetry;
+                   v.dt = dt;
+                 }});
+  }
+  for (const char* preset : {"fast", "balanced", "accurate"})
+    s.push_back({std::string("preset ") + preset, false, [preset](SolverSpec& v) { apply_solver_preset(preset, v); }});
+  // Error control alone: the balanced preset's other settings, no floor.
+  for (double rtol : {1e-3, 3e-4, 1e-4, 3e-5}) {
+    char label[32];
+    std::snprintf(label, sizeof label, "error %.2g", rtol);
+    s.push_back({label, false, [rtol](SolverSpec& v) {
+                   apply_solver_preset("balanced", v);
+                   v.rtol = rtol;
+                   v.dt_floor = 0.0;
+                 }});
+  }
+  // The reference: a 100x smaller tolerance than the balanced preset's, with a floor 8x below its
+  // (without one an undamped body's every bounce would be followed for hours).
+  s.push_back({"reference", false, [](SolverSpec& v) {
+                 apply_solver_preset("balanced", v);
+                 v.rtol = 1.5e-6;
+                 v.atol_velocity = 1e-5;
+                 v.dt = v.dt_floor = 1.25e-4;
+               }});
+  return s;
+}
+
+}  // namespace
+
+std::vector<TraversalRow> traversal_rows(const Scene& base, const std::function<void(const TraversalRow&)>& progress) {
+  std::vector<TraversalRow> rows;
+  std::vector<std::vector<std::vector<double>>> frames;
+  for (const Setting& setting : settings()) {
+    Scene scene = base;
+    setting.apply(scene.solver);
+    PositionRecorder recorder(scene.rod.nodes);
+    Run run(compile(scene));
+    TraversalRow row;
+    row.ok = run.run(recorder);
+    const RunStatistics& s = run.statistics();
+    row.scene = base.name;
+    row.stepping = setting.label;
+    row.fixed = setting.fixed;
+    row.steps = s.steps;
+    row.mean_dt = s.steps ? s.simulated_time / s.steps : 0.0;
+    row.newton_per_step = s.steps ? static_cast<double>(s.newton_iterations) / s.steps : 0.0;
+    row.wall_time = s.wall_time;
+    row.real_time = s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0;
+    row.goal_time = s.goal_reached ? s.goal_time : std::numeric_limits<double>::quiet_NaN();
+    row.tip_rms = s.tip_error_rms;
+    row.tip_max = s.tip_error_max;
+    row.contact_force_max = s.contact_force_max;
+    row.steps_over_tolerance = s.warnings.step_over_tolerance.count;
+    rows.push_back(row);
+    frames.push_back(recorder.frames());
+  }
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    rows[k].body_deviation = largest_node_distance(frames[k], frames.back());
+    if (progress) progress(rows[k]);
+  }
+  return rows;
+}
+
+void print_traversal_header() {
+  std::printf("%-16s %-17s %9s %7s %6s %9s %9s %10s %8s %15s %10s %8s\n", "scene", "stepping", "mean dt", "steps", "iter",
+              "wall [s]", "real-time", "body [mm]", "goal [s]", "tip rms/max mm", "contact N", "floored");
+}
+
+void print_traversal_row(const TraversalRow& r) {
+  std::printf("%-16s %-17s %9.2e %7d %6.2f %9.3f %8.0fx %10.3f %8.3f %7.3f/%-7.3f %10.4f %8d%s\n", r.scene.c_str(),
+              r.stepping.c_str(), r.mean_dt, r.steps, r.newton_per_step, r.wall_time, r.real_time, 1e3 * r.body_deviation,
+              r.goal_time, 1e3 * r.tip_rms, 1e3 * r.tip_max, r.contact_force_max, r.steps_over_tolerance,
+              r.ok ? "" : "  FAILED");
+}
+
+void print_traversal_comparison(const std::vector<TraversalRow>& rows) {
+  std::vector<TraversalRow> sorted;
+  for (const auto& r : rows)
+    if (r.ok && r.stepping != "reference") sorted.push_back(r);
+  std::sort(sorted.begin(), sorted.end(), [](const TraversalRow& a, const TraversalRow& b) { return a.wall_time < b.wall_time; });
+  std::printf("\nPareto front (%s, body deviation against wall time):\n", rows.empty() ? "" : rows[0].scene.c_str());
+  print_traversal_header();
+  double best = INFINITY;
+  for (const auto& r : sorted)
+    if (r.body_deviation < best) {
+      best = r.body_deviation;
+      print_traversal_row(r);
+    }
+  std::printf("\nAgainst the fastest fixed step of equal or smaller body deviation:\n");
+  for (const auto& a : sorted) {
+    if (a.fixed) continue;
+    const TraversalRow* fixed = nullptr;
+    for (const auto& f : sorted)
+      if (f.fixed && f.body_deviation <= a.body_deviation && (!fixed || f.wall_time < fixed->wall_time)) fixed = &f;
+    if (fixed)
+      std::printf("  %-17s %.3f mm in %.3f s   %-12s %.3f mm in %.3f s   %.2fx faster\n", a.stepping.c_str(),
+                  1e3 * a.body_deviation, a.wall_time, fixed->stepping.c_str(), 1e3 * fixed->body_deviation,
+                  fixed->wall_time, fixed->wall_time / a.wall_time);
+    else
+      std::printf("  %-17s %.3f mm in %.3f s   no fixed step as accurate\n", a.stepping.c_str(), 1e3 * a.body_deviation,
+                  a.wall_time);
+  }
+}
+
+}  // namespace vascsim::cli
