@@ -176,5 +176,17 @@ TEST(CliRun, ADirectoryOrADeviceIsNotASceneFile) {
   fs::remove_all(dir);
 }
 
+// A catheter only pushed from its root (control.mode "none", control.advance) follows no
+// reference: the summary line reports the drive's push, not a tracking error it cannot have.
+TEST(CliRun, ARunWithoutTipControlReportsTheFeedNotATrackingError) {
+  const std::string dir = fresh_temp_dir("run_feed_only");
+  const CommandResult r = run_vascsim("run " + std::string(VASCSIM_SOURCE_DIR) + "/scenes/coil_chamber.json --out " + dir +
+                                      "/out --duration 0.3 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("no tip control"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("feed: pushed with up to "), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("tip error"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace vascsim::test

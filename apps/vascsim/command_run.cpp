@@ -166,11 +166,17 @@ int run_run_command(int argc, char** argv) {
     std::printf("%s: %d steps, %.2f s simulated in %.2f s (%.1fx real time), %zu frames -> %s\n",
                 ok ? "done" : "FAILED", s.steps, s.simulated_time, s.wall_time,
                 s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0, s.frames, log_path.c_str());
-  if (run.navigation())
-    std::printf("goal %s%s, tip error rms %.2f mm max %.2f mm, max penetration %.3f mm\n",
-                s.goal_reached ? "reached at t = " : "not reached",
-                s.goal_reached ? (std::to_string(s.goal_time) + " s").c_str() : "", 1e3 * s.tip_error_rms,
-                1e3 * s.tip_error_max, 1e3 * s.max_penetration);
+  if (run.navigation()) {
+    const std::string goal = s.goal_reached ? "goal reached at t = " + std::to_string(s.goal_time) + " s" : "goal not reached";
+    // Without tip actuation (control.mode "none") nothing follows the reference: no tracking error to report.
+    if (scene.control.mode == ActuationMode::kNone)
+      std::printf("%s, no tip control, max penetration %.3f mm\n", goal.c_str(), 1e3 * s.max_penetration);
+    else
+      std::printf("%s, tip error rms %.2f mm max %.2f mm, max penetration %.3f mm\n", goal.c_str(), 1e3 * s.tip_error_rms,
+                  1e3 * s.tip_error_max, 1e3 * s.max_penetration);
+    if (scene.control.advance.enabled())
+      std::printf("feed: pushed with up to %.3g N (mean %.3g N)\n", s.feed_force_max, s.feed_force_mean);
+  }
   std::printf("summary: %s\n", summary_path.c_str());
   const auto warn = [](const char* what, const WarningCount& w) {
     if (w.count > 0) std::fprintf(stderr, "vascsim run: warning: %s %d times, first at t = %g s (summary.json /warnings)\n", what, w.count, w.first_time);
