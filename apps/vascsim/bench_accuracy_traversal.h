@@ -32,7 +32,7 @@ struct TraversalRow {
 };
 
 // Runs the traversals of `scene` (read from a file) and returns them, reference last. `progress`
-// is called with each row as it completes.
+// is called with each row once the reference, which runs last, has given its deviation.
 std::vector<TraversalRow> traversal_rows(const Scene& scene, const std::function<void(const TraversalRow&)>& progress);
 
 void print_traversal_header();

@@ -8,11 +8,13 @@ namespace vascsim {
 
 namespace {
 
-// Unit tangent at node i of the polyline x (2N): the mean direction of its edges, or its one
-// edge at the ends and where the rod folds back on itself (the mean vanishes there).
-Vec2 node_tangent(const Eigen::VectorXd& x, int i, int nodes) {
+// Unit tangent at node i of the polyline x + h v (2N; m, m/s, s): the mean direction of its
+// edges, or its one edge at the ends and where the rod folds back on itself (the mean vanishes
+// there). Evaluated per edge so that no moved copy of the rod is made on this hot path.
+Vec2 node_tangent(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double h, int i, int nodes) {
   auto edge_direction = [&](int e) -> Vec2 {
-    const Vec2 d = x.segment<2>(2 * e + 2) - x.segment<2>(2 * e);
+    Vec2 d = x.segment<2>(2 * e + 2) - x.segment<2>(2 * e);
+    if (h != 0.0) d += h * (v.segment<2>(2 * e + 2) - v.segment<2>(2 * e));
     const double length = d.norm();
     return length > 0.0 ? Vec2(d / length) : Vec2(1.0, 0.0);
   };
@@ -70,10 +72,11 @@ void QuadraticDragModule::add_cross_flow(const ForceContext& ctx, Eigen::Ref<Eig
   const Eigen::VectorXd& v = *ctx.v;
   // The tangents' configuration (loads.h): the step's start carried to its end.
   const double h = ctx.start ? ctx.t - ctx.start->t : 0.0;  // s, the step (0: a committed state)
-  const Eigen::VectorXd x = h > 0.0 ? Eigen::VectorXd(ctx.start->x + h * ctx.start->v) : *ctx.x;
+  const Eigen::VectorXd& x = h > 0.0 ? ctx.start->x : *ctx.x;
+  const Eigen::VectorXd& x_rate = h > 0.0 ? ctx.start->v : *ctx.v;
   const int nodes = static_cast<int>(c_.size());
   for (int i = 0; i < nodes; ++i) {
-    const Vec2 t = node_tangent(x, i, nodes);
+    const Vec2 t = node_tangent(x, x_rate, std::max(h, 0.0), i, nodes);
     const Vec2 n(-t.y(), t.x());
     const Vec2 vi = v.segment<2>(2 * i);
     const double vt = vi.dot(t), vn = vi.dot(n);

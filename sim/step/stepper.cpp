@@ -45,8 +45,10 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
   // Newton from a configuration with every gap open). It is exact for the motion BDF2 integrates
   // exactly (a quadratic in time); on the maze traversals it saves about a third of the Newton
   // iterations over constant velocity (docs/solver.md, "Predictor").
-  // The paper's contact moves nodes after the solve (run.cpp), so its velocity differences are
-  // no acceleration: constant velocity there, as before.
+  // Not under the paper's contact: its wall forces are explicit, raised between re-solves of a
+  // step (run.cpp), so the last velocity difference carries their jumps, and from that start
+  // Newton reached other solutions often enough that 2 of the 21 mazes of
+  // tests/navigation_test.cpp lost their goal. Constant velocity there, as before.
   ws.dx = h * state.v;
   if (state.h_prev > 0.0 && model.scene.contact.mode != ContactMode::kPaper)
     ws.dx += (0.5 * h * h / state.h_prev) * (state.v - state.v_prev);
