@@ -156,7 +156,7 @@ double Run::advance_controlled(double dt) {
     // because theirs carries the solve's own error in x divided by h, which no shorter step
     // reduces (docs/solver.md, "Step size").
     const LocalError local = local_error(before, state_, order, workspace_.fixed, error_weights_);
-    const double err = local.estimated() ? std::max(local.position / (report.dt / 1.0), local.velocity) : -1.0;
+    const double err = local.estimated() ? std::max(local.position / report.dt, local.velocity) : -1.0;
     // A step no longer than the floor is kept whatever its error, and counted: the presets trade
     // resolving an undamped body's every bounce for a bounded cost (docs/accuracy.md).
     const bool at_floor = report.dt <= model_->solver.dt_floor * (1 + 1e-12);
