@@ -12,6 +12,7 @@
 #include "sim/run/compile.h"
 #include "sim/run/run.h"
 #include "sim/step/local_error.h"
+#include "sim/step/step_budget.h"
 #include "sim/step/stepper.h"
 #include "tests/rod_test_scenes.h"
 
@@ -95,13 +96,17 @@ TEST(LocalError, NoEstimateWithoutHistoryAndPrescribedDegreesOfFreedomAreNotCoun
 
 // A constant axial pull F on node 2 from rest: x(t) = x_static (1 - cos w t), x_static = F / k.
 struct ControlledRun {
-  double error = 0.0;  // m, largest |x - exact| over the frames
+  double error = 0.0;                // m, largest |x - exact| over the frames
+  std::vector<double> frame_errors;  // m, |x - exact| at each frame
   RunStatistics stats;
 };
 
-ControlledRun pulled_oscillator(Scheme scheme, double rtol, double dt_floor = 0.0) {
+ControlledRun pulled_oscillator(Scheme scheme, double rtol, double dt_floor = 0.0, double dt_mean_min = 0.0,
+                                double mean_burst = 0.0) {
   Scene scene = oscillator(scheme);
   scene.solver.dt_floor = dt_floor;
+  scene.solver.dt_mean_min = dt_mean_min;
+  scene.solver.mean_burst = mean_burst;
   scene.solver.adaptive = StepControl::kError;
   scene.solver.rtol = rtol;
   scene.solver.atol_position = 0.0;
@@ -119,14 +124,13 @@ ControlledRun pulled_oscillator(Scheme scheme, double rtol, double dt_floor = 0.
   scene.loads.point_loads.push_back(pull);
   Run run(compile(scene));
   struct Sink : FrameSink {
-    double error = 0.0;
+    std::vector<double> errors;
     void write(double t, const std::vector<double>& values) override {
-      const double exact = 1.0 + kAmplitude * (1.0 - std::cos(kOmega * t));
-      error = std::max(error, std::abs(values[4] - exact));
+      errors.push_back(std::abs(values[4] - (1.0 + kAmplitude * (1.0 - std::cos(kOmega * t)))));
     }
   } sink;
   EXPECT_TRUE(run.run(sink)) << run.statistics().failure;
-  return {sink.error, run.statistics()};
+  return {*std::max_element(sink.errors.begin(), sink.errors.end()), sink.errors, run.statistics()};
 }
 
 // Over a sweep of tolerances the global error stays within a small factor of what the tolerance
@@ -176,6 +180,54 @@ TEST(ErrorControl, AFloorBoundsTheStepAndCountsWhatItKeepsOverTheTolerance) {
   EXPECT_LE(floored.stats.error_max, 1.0) << "error_max reports the steps within the tolerance";
   // The error grows with the step, as a fixed step of the floor's size would give.
   EXPECT_GT(floored.error, 10 * free.error);
+}
+
+// A floor on the mean step (solver.dt_mean_min, the presets' bound on what rattling costs) lets
+// the steps go as short as the tolerance asks while the run has credit, then holds them at the
+// mean floor: the frames before the credit runs out are those of the run without a floor, and
+// the run takes no more than T / dt_mean_min + mean_burst steps, plus the steps cut short to land
+// on output times (at most two per frame).
+TEST(ErrorControl, AMeanFloorFollowsTheToleranceWhileItHasCreditAndBoundsTheStepCount) {
+  const double mean_floor = 0.01, duration = 3.0;  // s, the oscillator's run
+  const ControlledRun free = pulled_oscillator(Scheme::kBdf2, 1e-6);
+  ASSERT_GT(free.stats.steps, 4 * duration / mean_floor) << "the tolerance must need steps well below the mean floor";
+  const double burst = free.stats.steps / 4.0;
+  const ControlledRun bounded = pulled_oscillator(Scheme::kBdf2, 1e-6, 0.0, mean_floor, burst);
+  EXPECT_LE(bounded.stats.steps, duration / mean_floor + burst + 2.0 * bounded.stats.frames);
+  EXPECT_LT(bounded.stats.steps, free.stats.steps / 2);
+  EXPECT_GT(bounded.stats.warnings.step_over_tolerance.count, 0) << "the mean floor never held";
+  EXPECT_LT(bounded.stats.dt_min, mean_floor) << "no step went below the mean floor on credit";
+  ASSERT_EQ(bounded.frame_errors.size(), free.frame_errors.size());
+  std::size_t same = 0;
+  while (same < free.frame_errors.size() && bounded.frame_errors[same] == free.frame_errors[same]) ++same;
+  // The credit, a quarter of the free run's steps, lasts about a quarter of the run.
+  EXPECT_GT(same, free.frame_errors.size() / 8) << "the run left the tolerance before its credit was spent";
+  EXPECT_LT(same, free.frame_errors.size()) << "the credit never ran out";
+  // A hard floor at the same step gives up the tolerance from the start.
+  const ControlledRun hard = pulled_oscillator(Scheme::kBdf2, 1e-6, mean_floor);
+  EXPECT_GT(hard.frame_errors[free.frame_errors.size() / 8], 10 * free.frame_errors[free.frame_errors.size() / 8]);
+}
+
+// The credit's arithmetic (sim/step/step_budget.h): steps shorter than the mean floor spend it,
+// longer ones earn it back up to the burst, and the hard floor holds whatever the credit.
+TEST(StepBudget, CreditIsSpentBelowTheMeanFloorAndEarnedAboveIt) {
+  StepBudget budget(1e-4, 1e-2, 3.0);
+  EXPECT_EQ(budget.floor(), 1e-4) << "with credit only the hard floor holds";
+  int below = 0;
+  while (budget.floor() < 1e-2 && below < 100) {
+    budget.spend(1e-4);  // costs 0.99 of a step each
+    ++below;
+  }
+  EXPECT_EQ(below, 3) << "a burst of 3 steps allows 3 short steps";
+  budget.spend(1e-2);
+  EXPECT_EQ(budget.floor(), 1e-2) << "a step at the mean floor earns nothing";
+  budget.spend(2e-2);  // earns one step
+  EXPECT_EQ(budget.floor(), 1e-4);
+  for (int k = 0; k < 100; ++k) budget.spend(2e-2);
+  for (below = 0; budget.floor() < 1e-2 && below < 100; ++below) budget.spend(1e-4);
+  EXPECT_EQ(below, 3) << "credit is capped at the burst";
+  EXPECT_EQ(StepBudget(1e-4, 0.0, 0.0).floor(), 1e-4);
+  EXPECT_EQ(StepBudget(0.0, 0.0, 0.0).floor(), 0.0);
 }
 
 // The dynamic cantilever of `vascsim bench accuracy` (the paper's rod, centred clamp, a tip load

@@ -25,11 +25,23 @@ TEST(SolverSections, PresetThenExplicitOverride) {
   EXPECT_EQ(d.solver.dt, 1e-4);
   EXPECT_EQ(read_scene_text(R"({"maze": null, "solver": {"dt": 1e-4, "adaptive": "error"}})", "t.json").solver.adaptive,
             StepControl::kError);
-  try {
-    read_scene_text(R"({"maze": null, "solver": {"dt_floor": 0.5}})", "t.json");
-    ADD_FAILURE() << "a floor above dt_max was accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/solver/dt_floor"), std::string::npos) << e.what();
+  // And a floor on the mean step with 10 s of credit below it (sim/step/step_budget.h).
+  EXPECT_EQ(s.solver.dt_mean_min, 1e-2);
+  EXPECT_DOUBLE_EQ(s.solver.mean_burst, 1000.0);
+  const Scene m = read_scene_text(R"({"maze": null, "solver": {"dt_mean_min": 0, "mean_burst": 5}})", "t.json");
+  EXPECT_EQ(m.solver.dt_mean_min, 0.0);
+  EXPECT_EQ(m.solver.mean_burst, 5.0);
+  EXPECT_EQ(m.solver.dt_floor, 1e-3) << "the balanced preset's hard floor stays";
+  const std::pair<const char*, const char*> refused[] = {{R"({"maze": null, "solver": {"dt_floor": 0.5}})", "dt_floor"},
+                                                          {R"({"maze": null, "solver": {"dt_mean_min": 0.5}})", "dt_mean_min"},
+                                                          {R"({"maze": null, "solver": {"mean_burst": -1}})", "mean_burst"}};
+  for (const auto& [text, key] : refused) {
+    try {
+      read_scene_text(text, "t.json");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("/solver/") + key), std::string::npos) << e.what();
+    }
   }
   const Scene e = read_scene_text(R"({"maze": null, "solver": {"adaptive": "error", "rtol": 1e-5}})", "t.json");
   EXPECT_EQ(e.solver.adaptive, StepControl::kError);

@@ -52,14 +52,14 @@ std::vector<Setting> settings() {
   }
   for (const char* preset : {"fast", "balanced", "accurate"})
     s.push_back({std::string("preset ") + preset, false, [preset](SolverSpec& v) { apply_solver_preset(preset, v); }});
-  // Error control alone: the balanced preset's other settings, no floor.
+  // Error control alone: the balanced preset's other settings, no floors.
   for (double rtol : {1e-3, 3e-4, 1e-4, 3e-5}) {
     char label[32];
     std::snprintf(label, sizeof label, "error %.2g", rtol);
     s.push_back({label, false, [rtol](SolverSpec& v) {
                    apply_solver_preset("balanced", v);
                    v.rtol = rtol;
-                   v.dt_floor = 0.0;
+                   v.dt_floor = v.dt_mean_min = 0.0;
                  }});
   }
   // The reference: a 100x smaller tolerance than the balanced preset's, with a floor 8x below its
@@ -69,6 +69,7 @@ std::vector<Setting> settings() {
                  v.rtol = 1.5e-6;
                  v.atol_velocity = 1e-5;
                  v.dt = v.dt_floor = 1.25e-4;
+                 v.dt_mean_min = 0.0;
                }});
   return s;
 }

@@ -182,7 +182,7 @@ int run_run_command(int argc, char** argv) {
     if (w.count > 0) std::fprintf(stderr, "vascsim run: warning: %s %d times, first at t = %g s (summary.json /warnings)\n", what, w.count, w.first_time);
   };
   // Round-off stops are an accepted convergence criterion (docs/solver.md), and steps kept at
-  // solver.dt_floor over the tolerance the presets' designed trade (docs/accuracy.md): counted, not printed.
+  // a floor (solver.dt_floor, dt_mean_min) over the tolerance the presets' designed trade (docs/accuracy.md): counted, not printed.
   warn("a step was retried with a smaller dt", s.warnings.step_retried);
   warn("paper contact hit contact.paper_iterations unsettled", s.warnings.paper_contact_cap);
   warn("the static equilibrium is unstable (the Newton matrix has negative pivots)", s.warnings.unstable_equilibrium);

@@ -14,7 +14,11 @@ namespace {
 // indefinite Newton matrix would let the solver walk uphill.
 template <int Dim>
 Eigen::Matrix<double, Dim, Dim> project_psd(const Eigen::Matrix<double, Dim, Dim>& m) {
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, Dim, Dim>> eig(m);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, Dim, Dim>> eig;
+  // 2x2 (a node against a wall, nearly every pair) in closed form: the iterative QR it replaces
+  // was 4 % of a traversal's time.
+  if constexpr (Dim == 2) eig.computeDirect(m);
+  else eig.compute(m);
   const auto clamped = eig.eigenvalues().cwiseMax(0.0);
   return eig.eigenvectors() * clamped.asDiagonal() * eig.eigenvectors().transpose();
 }

@@ -46,6 +46,8 @@ void read_solver(FieldReader& in, SolverSpec& out) {
   out.dt_max = in.positive("dt_max", out.dt_max, 10.0);
   out.dt_min = in.positive("dt_min", out.dt_min, out.dt_max);
   out.dt_floor = in.number("dt_floor", out.dt_floor, 0.0, out.dt_max);
+  out.dt_mean_min = in.number("dt_mean_min", out.dt_mean_min, 0.0, out.dt_max);
+  out.mean_burst = in.number("mean_burst", out.mean_burst, 0.0, 1e9);
   out.rel_tol = in.positive("rel_tol", out.rel_tol, 1.0);
   out.abs_tol = in.number("abs_tol", out.abs_tol, 0.0, 1e9);
   out.step_tol = in.positive("step_tol", out.step_tol, 1.0);
@@ -71,6 +73,8 @@ json write_solver(const SolverSpec& spec) {
           {"atol_velocity", spec.atol_velocity},
           {"dt_min", spec.dt_min},
           {"dt_floor", spec.dt_floor},
+          {"dt_mean_min", spec.dt_mean_min},
+          {"mean_burst", spec.mean_burst},
           {"dt_max", spec.dt_max},
           {"max_halvings", spec.max_halvings},
           {"load_steps", spec.load_steps},

@@ -30,7 +30,8 @@ Run::Run(std::shared_ptr<const Model> model)
       workspace_(*model_) {
   const int n = model_->nodes();
   if (model_->solver.adaptive == StepControl::kError) {
-    step_size_.emplace(std::max(model_->solver.dt_min, model_->solver.dt_floor), model_->solver.dt_max);
+    step_size_.emplace(model_->solver.dt_max);
+    step_budget_.emplace(model_->solver.dt_floor, model_->solver.dt_mean_min, model_->solver.mean_burst);
     error_weights_ = {model_->solver.rtol, model_->solver.atol_position, model_->solver.atol_velocity, scene_.rod.length};
   }
   if (navigation_) {
@@ -157,15 +158,18 @@ double Run::advance_controlled(double dt) {
     // reduces (docs/solver.md, "Step size").
     const LocalError local = local_error(before, state_, order, workspace_.fixed, error_weights_);
     const double err = local.estimated() ? std::max(local.position / report.dt, local.velocity) : -1.0;
-    // A step no longer than the floor is kept whatever its error, and counted: the presets trade
-    // resolving an undamped body's every bounce for a bounded cost (docs/accuracy.md).
-    const bool at_floor = report.dt <= model_->solver.dt_floor * (1 + 1e-12);
+    // A step no longer than the floor in force is kept whatever its error, and counted: the
+    // presets trade resolving an undamped body's every bounce for a bounded cost (docs/accuracy.md).
+    const double floor = step_budget_->floor();
+    const bool at_floor = report.dt <= floor * (1 + 1e-12);
     if (err <= 1.0 || at_floor) {
       if (err > 1.0) stats_.warnings.step_over_tolerance.note(before.t);
       commit(report, controls);
+      step_budget_->spend(report.dt);
       error_weights_.speed = std::max(error_weights_.speed, state_.v.lpNorm<Eigen::Infinity>());
       if (err <= 1.0) stats_.error_max = std::max(stats_.error_max, err);
-      return err < 0 ? report.dt : step_size_->accepted(report.dt, err, order);
+      // The floor after this step: it may have spent the last credit, or earned some.
+      return err < 0 ? report.dt : step_size_->accepted(report.dt, err, order, shortest_step());
     }
     if (report.dt <= model_->solver.dt_min * (1 + 1e-12)) {
       stats_.failed = true;
@@ -179,11 +183,13 @@ double Run::advance_controlled(double dt) {
       return 0.0;
     }
     ++stats_.error_rejected_steps;
-    h = step_size_->rejected(report.dt, err, order);
+    h = step_size_->rejected(report.dt, err, order, shortest_step());
     state_ = before;
     wall_forces_ = wall_forces_before;
   }
 }
+
+double Run::shortest_step() const { return std::max(model_->solver.dt_min, step_budget_->floor()); }
 
 Eigen::VectorXd Run::channel_force(const std::string& name, const Controls& controls) const {
   const ForceContext ctx = ForceContext::at(state_, controls);

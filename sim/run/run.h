@@ -18,6 +18,7 @@
 #include "sim/step/model.h"
 #include "sim/step/local_error.h"
 #include "sim/step/newton.h"
+#include "sim/step/step_budget.h"
 #include "sim/step/step_size_controller.h"
 #include "sim/step/stepper.h"
 
@@ -44,7 +45,7 @@ struct WarningCount {
 struct RunWarnings {
   WarningCount newton_round_off;      // steps whose Newton stopped at round-off, not at rel_tol
   WarningCount step_retried;          // steps that needed a smaller dt (see rejected_steps)
-  WarningCount step_over_tolerance;   // error control: steps at solver.dt_floor kept over the tolerance
+  WarningCount step_over_tolerance;   // error control: steps at a floor (dt_floor, dt_mean_min) kept over the tolerance
   WarningCount paper_contact_cap;     // paper contact: steps that hit contact.paper_iterations unsettled
   WarningCount unstable_equilibrium;  // static mode: the equilibrium found is unstable
   WarningCount left_unstable;         // static mode: the load path's was, and the solve left it for a stable one
@@ -112,6 +113,7 @@ class Run {
   void commit(const StepReport& report, const Controls& controls);
   bool advance(double dt);
   double advance_controlled(double dt);
+  double shortest_step() const;  // s, error control: the shortest step allowed now (dt_min or a floor)
   bool solve_equilibrium(FrameSink& sink);
   void record(FrameSink& sink);
   void update_statistics(double dt, const Controls& controls);
@@ -127,6 +129,7 @@ class Run {
   const Navigation* navigation_;  // model_->navigation, or null
   std::optional<TipController> controller_;
   std::optional<StepSizeController> step_size_;      // error control only
+  std::optional<StepBudget> step_budget_;            // error control only
   LocalErrorWeights error_weights_;
   std::vector<double> breakpoints_;                  // s, error control: where the reference's velocity or acceleration jumps
   ContactNeighbours probe_neighbours_;               // the gap statistics' lists (every contact mode)
