@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "sim/log/frame_log.h"
 #include "tests/cli_test_support.h"
@@ -35,6 +38,13 @@ TEST(CliRun, WritesLogAndSummaryAndRefusesToReuseADirectory) {
   const std::string summary = read_text(dir + "/out/summary.json");
   EXPECT_NE(summary.find("\"ok\": true"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"goal_reached\""), std::string::npos);
+  // The default preset controls the error: the run says where its steps went, as summary.json does.
+  const nlohmann::json j = nlohmann::json::parse(summary);
+  char expected[160];
+  std::snprintf(expected, sizeof expected, "error control: mean step %.3g s, %d steps rejected over the tolerance, %d kept over it at a floor\n",
+                j["simulated_time"].get<double>() / j["steps"].get<double>(), j["error_control"]["rejected_steps"].get<int>(),
+                j["warnings"]["step_over_tolerance"]["count"].get<int>());
+  EXPECT_NE(r.output.find(expected), std::string::npos) << "expected: " << expected << "output:\n" << r.output;
   // A second run into the same directory must not replace it silently.
   r = run_vascsim("run " + dir + "/scene.json --out " + dir + "/out --quiet");
   EXPECT_EQ(r.exit_code, 2);

@@ -166,6 +166,10 @@ int run_run_command(int argc, char** argv) {
     std::printf("%s: %d steps, %.2f s simulated in %.2f s (%.1fx real time), %zu frames -> %s\n",
                 ok ? "done" : "FAILED", s.steps, s.simulated_time, s.wall_time,
                 s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0, s.frames, log_path.c_str());
+  // Where a controlled run's steps went: what a user tuning rtol or the floors looks at first.
+  if (scene.solver.mode != SolveMode::kStatic && run.model().solver.adaptive == StepControl::kError)
+    std::printf("error control: mean step %.3g s, %d steps rejected over the tolerance, %d kept over it at a floor\n",
+                s.steps ? s.simulated_time / s.steps : 0.0, s.error_rejected_steps, s.warnings.step_over_tolerance.count);
   if (run.navigation()) {
     const std::string goal = s.goal_reached ? "goal reached at t = " + std::to_string(s.goal_time) + " s" : "goal not reached";
     // Without tip actuation (control.mode "none") nothing follows the reference: no tracking error to report.
