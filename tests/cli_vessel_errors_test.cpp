@@ -65,6 +65,9 @@ const BadVessels kBadMasks[] = {
     {"mask_start_outside", MASK("two_discs.png", "[0.01, 0.01]", "[0.3, 0.3]"), "/vessels/start: "},
     {"mask_goal_outside", MASK("two_discs.png", "[0.3, 0.3]", "[0.01, 0.01]"), "/vessels/goal: "},
     {"mask_not_connected", MASK("two_discs.png", "[0.3, 0.3]", "[1.3, 0.3]"), "/vessels/goal: "},
+    {"mask_changed",
+     R"({"vessels": {"mask": {"file": "two_discs.png", "pixel_size": 0.01, "pixel_hash": "0123456789abcdef"}, "start": [0.3, 0.3], "goal": [0.35, 0.3]}})",
+     "/vessels/mask/pixel_hash: expected the hash of "},
 };
 
 class VesselSceneErrors : public ::testing::TestWithParam<BadVessels> {};

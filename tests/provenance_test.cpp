@@ -4,13 +4,20 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "sim/io/log_metadata.h"
 #include "sim/io/provenance.h"
+#include "sim/io/scene_reader.h"
+#include "sim/scene/input_error.h"
 #include "sim/log/frame_log.h"
 #include "tests/cli_test_support.h"
+#include "tests/png_bytes_support.h"
 
 namespace vascsim::test {
 namespace {
@@ -65,6 +72,42 @@ TEST(Provenance, VersionSummaryAndLogAgree) {
   EXPECT_EQ(meta.scene_hash, a["scene_hash"].get<std::string>());
   EXPECT_EQ(meta.scene_hash, scene_hash(meta.scene_json))
       << "the hash is not that of the canonical scene the log carries";
+}
+
+// A vessel mask's scene names its image by path, so the canonical scene carries the pixels' hash:
+// the scene hash tells two images apart, and a scene re-read (from a log, say) after its image
+// changed is refused, naming the field and the image, rather than run on other vessels.
+TEST(Provenance, AMaskScenesHashCoversItsPixels) {
+  const std::string dir = fresh_temp_dir("provenance_mask");
+  std::vector<std::uint8_t> disc(60 * 60, 0);
+  for (int row = 0; row < 60; ++row)
+    for (int col = 0; col < 60; ++col)
+      if ((col - 30) * (col - 30) + (row - 30) * (row - 30) < 400) disc[static_cast<std::size_t>(row * 60 + col)] = 255;
+  const auto write_image = [&] { std::ofstream(dir + "/lumen.png", std::ios::binary) << png_bytes(60, 60, 0, disc); };
+  write_image();
+  write_text(dir + "/scene.json",
+             R"({"vessels": {"mask": {"file": "lumen.png", "pixel_size": 0.01}, "start": [0.3, 0.3], "goal": [0.35, 0.3]}})");
+  const std::string canonical = scene_to_json(read_scene_file(dir + "/scene.json"));
+  const std::string hash = nlohmann::json::parse(canonical)["vessels"]["mask"]["pixel_hash"].get<std::string>();
+  EXPECT_EQ(hash.size(), 16u);
+  write_text(dir + "/canonical.json", canonical);
+  EXPECT_EQ(scene_to_json(read_scene_file(dir + "/canonical.json")), canonical);  // the same image: read as before
+
+  disc[30 * 60 + 30] = 254;  // one grey level of one pixel
+  write_image();
+  const std::string changed = scene_to_json(read_scene_file(dir + "/scene.json"));
+  EXPECT_NE(nlohmann::json::parse(changed)["vessels"]["mask"]["pixel_hash"].get<std::string>(), hash);
+  EXPECT_NE(provenance_of(changed).scene_hash, provenance_of(canonical).scene_hash);
+  try {
+    read_scene_file(dir + "/canonical.json");
+    ADD_FAILURE() << "a scene whose image changed was read";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(dir + "/canonical.json: /vessels/mask/pixel_hash: expected the hash of "), std::string::npos) << message;
+    EXPECT_NE(message.find("lumen.png"), std::string::npos) << message;
+    EXPECT_NE(message.find(hash), std::string::npos) << message;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

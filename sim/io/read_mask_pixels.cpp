@@ -1,4 +1,7 @@
+#include <string>
+
 #include "sim/io/png_file.h"
+#include "sim/io/provenance.h"
 #include "sim/io/scene_sections.h"
 #include "sim/scene/input_error.h"
 
@@ -14,6 +17,12 @@ std::vector<std::uint8_t> load_mask_pixels(VesselMaskSpec& spec, const std::stri
     // The PNG reader names the image; the scene file and its path say which field named it.
     throw InputError(scene_file + ": " + pointer + ": " + e.what());
   }
+}
+
+std::string mask_pixel_hash(const VesselMaskSpec& spec) {
+  std::string bytes = std::to_string(spec.width) + "x" + std::to_string(spec.height) + ":";
+  bytes.append(spec.grey.begin(), spec.grey.end());
+  return scene_hash(bytes);
 }
 
 }  // namespace vascsim::io

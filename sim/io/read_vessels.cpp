@@ -84,15 +84,18 @@ VesselSegmentSpec read_segment(FieldReader& in) {
   return s;
 }
 
-void read_mask(FieldReader& in, VesselMaskSpec& m) {
+// Returns the `pixel_hash` the scene states ("" if none), checked once the pixels are read.
+std::string read_mask(FieldReader& in, VesselMaskSpec& m) {
   m.file = in.text("file", "");
   if (m.file.empty()) in.fail("file", "the path of a PNG (white lumen on black)", in.has("file") ? *in.raw("file") : json());
   m.pixel_size = in.positive("pixel_size", m.pixel_size, 1.0);
   m.threshold = in.number("threshold", m.threshold, 0.0, 1.0);
+  const std::string pixel_hash = in.text("pixel_hash", "");
   in.finish();
   // A relative path is relative to the scene file, so a scene and its mask move together.
   const std::filesystem::path file(m.file);
   m.resolved = file.is_absolute() ? m.file : (std::filesystem::path(in.file()).parent_path() / file).string();
+  return pixel_hash;
 }
 
 }  // namespace
@@ -103,13 +106,16 @@ void read_vessels(FieldReader& in, VesselsSpec& out) {
     for (const char* key : {"nodes", "segments", "route"})
       if (in.has(key)) in.fail(key, "no graph beside a \"mask\" (the image is the whole network)", *in.raw(key));
     FieldReader mask = in.object("mask");
-    read_mask(mask, out.mask);
+    const std::string pixel_hash = read_mask(mask, out.mask);
     for (const char* key : {"start", "goal"})
       if (!in.has(key)) in.fail(key, "a point [x, y] (m) inside the mask's lumen", json());
     out.mask.start = in.vec2("start", out.mask.start);
     out.mask.goal = in.vec2("goal", out.mask.goal);
     in.finish();
     out.mask.grey = load_mask_pixels(out.mask, in.file(), in.pointer_of("mask") + "/file");
+    if (!pixel_hash.empty() && pixel_hash != mask_pixel_hash(out.mask))
+      mask.fail("pixel_hash", "the hash of " + out.mask.resolved + " as it is now, " + mask_pixel_hash(out.mask) +
+                                  " (the image changed since this scene was written)", pixel_hash);
     return;
   }
   const json* nodes = in.raw("nodes");
@@ -141,7 +147,10 @@ void read_vessels(FieldReader& in, VesselsSpec& out) {
 json write_vessels(const VesselsSpec& spec) {
   json j;
   if (spec.from_mask) {
-    j["mask"] = {{"file", spec.mask.file}, {"pixel_size", spec.mask.pixel_size}, {"threshold", spec.mask.threshold}};
+    j["mask"] = {{"file", spec.mask.file},
+                 {"pixel_size", spec.mask.pixel_size},
+                 {"threshold", spec.mask.threshold},
+                 {"pixel_hash", mask_pixel_hash(spec.mask)}};
     j["start"] = to_json(spec.mask.start);
     j["goal"] = to_json(spec.mask.goal);
     return j;
