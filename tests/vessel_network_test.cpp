@@ -3,8 +3,11 @@
 // tree, and every shipped vessel scene traversed to its goal inside the lumen.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+
+#include <nlohmann/json.hpp>
 
 #include "sim/env/vessel_environment.h"
 #include "sim/env/vessel_graph.h"
@@ -13,6 +16,7 @@
 #include "sim/io/scene_reader.h"
 #include "sim/log/channel_names.h"
 #include "sim/run/compile.h"
+#include "sim/run/navigation.h"
 #include "sim/run/run.h"
 #include "sim/scene/input_error.h"
 
@@ -130,6 +134,28 @@ TEST(VesselGraph, ShortestRouteAndExplicitRoute) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/vessels/route/2: no segment joins \"g0\" and \"g2ab\""), std::string::npos) << e.what();
   }
+}
+
+double largest_arc(const Trajectory& t) {
+  double r = 0.0;
+  for (const auto& piece : t.pieces()) r = std::max(r, piece.radius);
+  return r;
+}
+
+// A vessel scene rounds each corner as far as its lumen allows; path.corner_radius, if given,
+// caps that (and is kept in the canonical scene, which leaves it out when not given).
+TEST(VesselPath, CornerRadiusCapsWhatTheLumenAllows) {
+  Scene free = shipped("tortuous");
+  EXPECT_EQ(nlohmann::json::parse(scene_to_json(free))["path"].count("corner_radius"), 0u);
+  const double widest = largest_arc(*prepare_navigation(free)->trajectory);
+  ASSERT_GT(widest, 0.0);
+  Scene capped = shipped("tortuous");
+  capped.path.corner_radius = 0.5 * widest;
+  const std::unique_ptr<Navigation> nav = prepare_navigation(capped);
+  EXPECT_NEAR(largest_arc(*nav->trajectory), 0.5 * widest, 1e-12 * widest);
+  for (const auto& piece : nav->trajectory->pieces()) EXPECT_LE(piece.radius, 0.5 * widest * (1 + 1e-12));
+  const Scene again = read_scene_text(scene_to_json(capped), "canonical.json");
+  EXPECT_EQ(again.path.corner_radius, 0.5 * widest);
 }
 
 class ShippedNetwork : public ::testing::TestWithParam<const char*> {};

@@ -1,3 +1,5 @@
+#include <cmath>
+
 #include "sim/io/scene_sections.h"
 
 namespace vascsim::io {
@@ -15,10 +17,11 @@ void read_path(FieldReader& in, PathSpec& out) {
 }
 
 json write_path(const PathSpec& spec) {
-  return {{"solver", spec.solver == PathSolver::kBreadthFirst ? "bfs" : "wall_follower"},
-          {"corner_radius", spec.corner_radius},
-          {"speed", spec.speed},
-          {"ramp_time", spec.ramp_time}};
+  json j = {{"solver", spec.solver == PathSolver::kBreadthFirst ? "bfs" : "wall_follower"},
+            {"speed", spec.speed},
+            {"ramp_time", spec.ramp_time}};
+  if (std::isfinite(spec.corner_radius)) j["corner_radius"] = spec.corner_radius;  // infinite: a vessel scene's "no cap"
+  return j;
 }
 
 void read_rod(FieldReader& in, RodSpec& out) {

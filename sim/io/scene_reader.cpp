@@ -1,6 +1,7 @@
 #include "sim/io/scene_reader.h"
 
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <sstream>
 
@@ -35,6 +36,8 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
   } else {
     section("maze", io::read_maze, scene.maze);
   }
+  // A vessel scene rounds each corner as far as its lumen allows; a corner_radius it gives caps that.
+  if (scene.environment == EnvironmentKind::kVessels) scene.path.corner_radius = std::numeric_limits<double>::infinity();
   section("path", io::read_path, scene.path);
   section("rod", io::read_rod, scene.rod);
   section("run", io::read_run, scene.run);

@@ -1,5 +1,6 @@
 #include "sim/run/navigation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -70,7 +71,10 @@ std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
   auto nav = std::make_unique<Navigation>();
   try {
     if (scene.environment == EnvironmentKind::kMaze) prepare_maze(scene, *nav);
-    else nav->environment = build_vessel_environment(scene.vessels, scene.rod.length);
+    else {
+      nav->environment = build_vessel_environment(scene.vessels, scene.rod.length);
+      for (double& r : nav->environment.corner_radius) r = std::min(r, scene.path.corner_radius);
+    }
   } catch (const InputError& e) {
     // The environment code knows the JSON path, not the file.
     throw InputError(label_of(scene) + ": " + e.what());

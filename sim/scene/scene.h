@@ -92,7 +92,9 @@ enum class PathSolver { kWallFollower, kBreadthFirst };
 // The ideal trajectory: lumen centreline from start to goal, traversed at constant speed.
 struct PathSpec {
   PathSolver solver = PathSolver::kWallFollower;
-  double corner_radius = 0.05;  // m, 0 keeps sharp 90-degree corners
+  // m, 0 keeps sharp corners. Vessel scenes: a cap on what each corner's lumen allows, by default
+  // none (infinity, which the canonical scene leaves out).
+  double corner_radius = 0.05;
   double speed = 0.05;          // m/s, tip reference speed along the path
   double ramp_time = 0.0;       // s, from rest to `speed` and back to rest at the end; 0: the
                                 // paper's constant speed from t = 0 (trajectory.h)
