@@ -115,6 +115,10 @@ NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace
   double scale = assemble(model, p, ws.x, ws, true);
   double rnorm2 = ws.residual.squaredNorm();
   int free_steps = 2;
+  // Trial points are assembled without the Jacobian: most steps converge at their first trial,
+  // whose Jacobian would never be used. Only an iterate that goes on is assembled again with it
+  // (the residual comes out the same, bit for bit).
+  bool jacobian_at_x = true;
   for (;;) {
     const double rinf = norm_inf_free(ws.residual, ws.fixed);
     out.residual = rinf;
@@ -131,6 +135,10 @@ NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace
       out.failure = format("no convergence in %.0f Newton iterations (relative residual %.3g)",
                            static_cast<double>(out.iterations), rinf / std::max(scale, 1e-300));
       return out;
+    }
+    if (!jacobian_at_x) {
+      scale = assemble(model, p, ws.x, ws, true);
+      jacobian_at_x = true;
     }
     ws.dx = -ws.residual;
     if (ws.off_band.empty()) {
@@ -177,7 +185,8 @@ NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace
     bool accepted = false;
     for (int k = 0; k < 12; ++k) {
       ws.x_trial = ws.x + alpha * ws.dx;
-      const double trial_scale = assemble(model, p, ws.x_trial, ws, true);
+      const double trial_scale = assemble(model, p, ws.x_trial, ws, false);
+      jacobian_at_x = false;
       const double trial2 = ws.residual.squaredNorm();
       const bool watchdog = k == 0 && free_steps > 0;
       if (std::isfinite(trial2) && (watchdog || trial2 <= (1.0 - 1e-4 * alpha) * rnorm2)) {
