@@ -74,39 +74,47 @@ std::vector<Setting> settings() {
   return s;
 }
 
+TraversalRow run_setting(const Scene& base, const Setting& setting, std::vector<std::vector<double>>& frames) {
+  Scene scene = base;
+  setting.apply(scene.solver);
+  PositionRecorder recorder(scene.rod.nodes);
+  Run run(compile(scene));
+  TraversalRow row;
+  row.ok = run.run(recorder);
+  const RunStatistics& s = run.statistics();
+  row.scene = base.name;
+  row.stepping = setting.label;
+  row.fixed = setting.fixed;
+  row.steps = s.steps;
+  row.mean_dt = s.steps ? s.simulated_time / s.steps : 0.0;
+  row.newton_per_step = s.steps ? static_cast<double>(s.newton_iterations) / s.steps : 0.0;
+  row.wall_time = s.wall_time;
+  row.real_time = s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0;
+  row.goal_time = s.goal_reached ? s.goal_time : std::numeric_limits<double>::quiet_NaN();
+  row.tip_rms = s.tip_error_rms;
+  row.tip_max = s.tip_error_max;
+  row.contact_force_max = s.contact_force_max;
+  row.steps_over_tolerance = s.warnings.step_over_tolerance.count;
+  frames = recorder.frames();
+  return row;
+}
+
 }  // namespace
 
 std::vector<TraversalRow> traversal_rows(const Scene& base, const std::function<void(const TraversalRow&)>& progress) {
+  // The reference first, so that every other row can be reported as soon as it is run.
+  const std::vector<Setting> all = settings();
+  std::vector<std::vector<double>> reference_frames, frames;
+  TraversalRow reference = run_setting(base, all.back(), reference_frames);
   std::vector<TraversalRow> rows;
-  std::vector<std::vector<std::vector<double>>> frames;
-  for (const Setting& setting : settings()) {
-    Scene scene = base;
-    setting.apply(scene.solver);
-    PositionRecorder recorder(scene.rod.nodes);
-    Run run(compile(scene));
-    TraversalRow row;
-    row.ok = run.run(recorder);
-    const RunStatistics& s = run.statistics();
-    row.scene = base.name;
-    row.stepping = setting.label;
-    row.fixed = setting.fixed;
-    row.steps = s.steps;
-    row.mean_dt = s.steps ? s.simulated_time / s.steps : 0.0;
-    row.newton_per_step = s.steps ? static_cast<double>(s.newton_iterations) / s.steps : 0.0;
-    row.wall_time = s.wall_time;
-    row.real_time = s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0;
-    row.goal_time = s.goal_reached ? s.goal_time : std::numeric_limits<double>::quiet_NaN();
-    row.tip_rms = s.tip_error_rms;
-    row.tip_max = s.tip_error_max;
-    row.contact_force_max = s.contact_force_max;
-    row.steps_over_tolerance = s.warnings.step_over_tolerance.count;
-    rows.push_back(row);
-    frames.push_back(recorder.frames());
+  for (std::size_t k = 0; k + 1 < all.size(); ++k) {
+    rows.push_back(run_setting(base, all[k], frames));
+    rows.back().body_deviation = largest_node_distance(frames, reference_frames);
+    if (progress) progress(rows.back());
   }
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    rows[k].body_deviation = largest_node_distance(frames[k], frames.back());
-    if (progress) progress(rows[k]);
-  }
+  reference.body_deviation = 0.0;
+  rows.push_back(reference);
+  if (progress) progress(reference);
   return rows;
 }
 

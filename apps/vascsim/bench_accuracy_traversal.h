@@ -31,8 +31,8 @@ struct TraversalRow {
   bool ok = true;
 };
 
-// Runs the traversals of `scene` (read from a file) and returns them, reference last. `progress`
-// is called with each row once the reference, which runs last, has given its deviation.
+// Runs the traversals of `scene` (read from a file) and returns them, reference last. The
+// reference runs first, so `progress` is called with each row as soon as it has run.
 std::vector<TraversalRow> traversal_rows(const Scene& scene, const std::function<void(const TraversalRow&)>& progress);
 
 void print_traversal_header();
