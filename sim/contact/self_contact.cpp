@@ -19,6 +19,48 @@ SelfContactModule::SelfContactModule(const RodModel& rod, const ContactParams& p
   // ones would start inside each other's barrier (a fine mesh has edges much shorter than the
   // rod's thickness). Half as much again covers the bend a rod can make between them.
   exclusion_ = 1.5 * (thickness_ + g_hat_);
+  // A margin of a quarter of the barrier's reach keeps the list below the exclusion, so a
+  // straight stretch of rod, however finely meshed, puts no pairs in it.
+  list_reach_ = 1.25 * (thickness_ + g_hat_);
+}
+
+struct SelfContactModule::Cache : ModuleCache {
+  Eigen::VectorXd listed_at;                   // m, the positions the list was searched at
+  std::vector<std::pair<int, int>> listed;     // candidate_pairs(listed_at, list_reach_)
+  std::vector<std::pair<int, int>> filtered;   // the last call's pairs
+};
+
+std::unique_ptr<ModuleCache> SelfContactModule::make_cache() const { return std::make_unique<Cache>(); }
+
+const std::vector<std::pair<int, int>>& SelfContactModule::pairs_within(const Eigen::VectorXd& x, double reach,
+                                                                       Cache& cache) const {
+  // A node-edge pair's bounding-box separation changes by at most twice the largest node motion.
+  double moved = INFINITY;
+  if (cache.listed_at.size() == x.size()) {
+    moved = 0.0;
+    for (int i = 0; i < nodes_; ++i) moved = std::max(moved, (x.segment<2>(2 * i) - cache.listed_at.segment<2>(2 * i)).norm());
+  }
+  if (reach + 2.0 * moved > list_reach_ * (1.0 - 1e-9)) {
+    if (reach > list_reach_ * (1.0 - 1e-9)) {  // wider than any list: search afresh
+      cache.filtered = candidate_pairs(x, reach);
+      return cache.filtered;
+    }
+    cache.listed = candidate_pairs(x, list_reach_);
+    cache.listed_at = x;
+  }
+  // The test candidate_pairs makes, on both axes (inclusive), so the same pairs in the same order.
+  cache.filtered.clear();
+  for (const auto& pair : cache.listed) {
+    const int node = pair.first, e = pair.second;
+    bool inside = true;
+    for (int axis = 0; axis < 2 && inside; ++axis) {
+      const double lo = std::min(x[2 * e + axis], x[2 * e + 2 + axis]) - reach;
+      const double hi = std::max(x[2 * e + axis], x[2 * e + 2 + axis]) + reach;
+      inside = x[2 * node + axis] >= lo && x[2 * node + axis] <= hi;
+    }
+    if (inside) cache.filtered.push_back(pair);
+  }
+  return cache.filtered;
 }
 
 bool SelfContactModule::adjacent(int node, int edge) const {
@@ -56,7 +98,8 @@ std::vector<std::pair<int, int>> SelfContactModule::candidate_pairs(const Eigen:
 
 void SelfContactModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const {
   const Eigen::VectorXd& x = *ctx.x;
-  for (const auto& [node, edge] : candidate_pairs(x, thickness_ + g_hat_)) {
+  Cache scratch;
+  for (const auto& [node, edge] : pairs_within(x, thickness_ + g_hat_, cache_or(ctx, scratch))) {
     const PointSegmentDistance d = point_segment_distance(x.segment<2>(2 * node), x.segment<2>(2 * edge),
                                                           x.segment<2>(2 * edge + 2), stiffness != nullptr);
     const double gap = d.distance - thickness_;
@@ -86,7 +129,8 @@ double SelfContactModule::max_step_fraction(const ForceContext& ctx, const Eigen
   if (motion == 0.0) return 1.0;
   double alpha = 1.0;
   // A pair can close by at most twice the largest motion: only pairs within that can limit.
-  for (const auto& [node, edge] : candidate_pairs(x, thickness_ + 2.0 * motion)) {
+  Cache scratch;
+  for (const auto& [node, edge] : pairs_within(x, thickness_ + 2.0 * motion, cache_or(ctx, scratch))) {
     const double gap = point_segment_distance(x.segment<2>(2 * node), x.segment<2>(2 * edge), x.segment<2>(2 * edge + 2), false)
                            .distance -
                        thickness_;

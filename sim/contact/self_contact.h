@@ -7,7 +7,10 @@
 // a sparse factorisation (sim/step/sparse_solve.h) instead of the banded one. Each pair's 6x6
 // Hessian is projected onto the positive semi-definite cone (as IPC does), so Newton keeps a
 // descent direction. Pairs are found by a sort on x (sweep and prune), so a rod that does not
-// touch itself costs O(N log N) per evaluation. Channel force/contact.
+// touch itself costs O(N log N) per search, and a search's pairs are kept (a Verlet list, in the
+// run's cache) with a margin: until some node has moved half the margin, calls filter them
+// instead of sorting again, and find the very pairs a search would, in the same order, so the
+// forces are the same bit for bit. Channel force/contact.
 #pragma once
 
 #include <vector>
@@ -26,19 +29,24 @@ class SelfContactModule : public ForceModule {
   // Keeps every pair's gap open: a step may close at most 80 % of any gap, bounded by how fast the
   // gap can shrink (the node's and the farther edge end's displacement).
   double max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const override;
+  std::unique_ptr<ModuleCache> make_cache() const override;
 
   // Node-edge pairs (node, first node of the edge) whose distance may be below `reach` (m).
   std::vector<std::pair<int, int>> candidate_pairs(const Eigen::VectorXd& x, double reach) const;
 
  private:
+  struct Cache;
   // Whether a node and an edge are too close along the rod to be a contact pair.
   bool adjacent(int node, int edge) const;
+  // candidate_pairs(x, reach), from the cache's list while it covers `reach`, else searched.
+  const std::vector<std::pair<int, int>>& pairs_within(const Eigen::VectorXd& x, double reach, Cache& cache) const;
 
   int nodes_;
   double thickness_;  // m, 2 r_o
   double g_hat_, kappa_;
   std::vector<double> arc_;  // m, (N), rest arc length from the root to each node
   double exclusion_ = 0.0;   // m
+  double list_reach_ = 0.0;  // m, reach of the kept list: the barrier's plus the margin
 };
 
 }  // namespace vascsim
