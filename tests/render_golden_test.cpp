@@ -44,6 +44,22 @@ TEST(RenderGolden, FollowCameraZoomedOnTip) {
   testing::expect_matches_golden(png_frame_path(o.png_dir, 0), "frame_follow_320x240.png");
 }
 
+// A vessel network's look: the lumen filled between its rings (a ring-shaped vessel around a
+// hole), its walls, path and rod.
+TEST(RenderGolden, FitFrameOfARingVessel) {
+  ScratchDir dir("golden_vessel");
+  const std::string log = testing::write_log(dir, "ring", testing::annulus_metadata());
+  RenderOptions o;
+  o.png_dir = dir / "png";
+  o.view.width = 320;
+  o.view.height = 240;
+  o.from = 0.5;
+  o.to = 0.5;
+  const RenderReport r = render_run(log, o);
+  ASSERT_EQ(r.frames, 1u);
+  testing::expect_matches_golden(png_frame_path(o.png_dir, 0), "frame_vessel_320x240.png");
+}
+
 TEST(RenderGolden, TipTrajectoryPlot) {
   ScratchDir dir("golden_plot");
   SyntheticLogSpec spec;

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -39,6 +40,48 @@ class ScratchDir {
  private:
   fs::path path_;
 };
+
+// A ring-shaped vessel: lumen between radii 10 and 20 mm around (25, 25) mm, zero-thickness
+// walls on both outlines (as a vessel network logs them), the path most of the way round.
+inline Polyline circle(Vec2 centre, double radius, int n, double phase = 0.0) {
+  Polyline p;
+  for (int i = 0; i < n; ++i) {
+    const double a = phase + 2 * 3.14159265358979323846 * i / n;
+    p.push_back(centre + radius * Vec2(std::cos(a), std::sin(a)));
+  }
+  return p;
+}
+constexpr double kInner = 0.010, kOuter = 0.020;  // m
+inline const Vec2 kCentre(0.025, 0.025);          // m
+
+inline LogMetadata annulus_metadata() {
+  LogMetadata m;
+  m.title = "annulus";
+  m.bounds = {Vec2(0, 0), Vec2(0.05, 0.05)};
+  m.lumen = {circle(kCentre, kOuter, 120, 0.013), circle(kCentre, kInner, 72, 0.029)};
+  for (const auto& ring : m.lumen)
+    for (std::size_t i = 0; i < ring.size(); ++i) m.walls.push_back({ring[i], ring[(i + 1) % ring.size()], 0.0});
+  for (int i = 0; i <= 60; ++i) {
+    const double a = -0.5 * 3.14159265358979323846 + 1.6 * 3.14159265358979323846 * i / 60;
+    m.path.push_back(kCentre + 0.5 * (kInner + kOuter) * Vec2(std::cos(a), std::sin(a)));
+  }
+  m.lumen_width = kOuter - kInner;
+  m.start = m.path.front();
+  m.goal = m.path.back();
+  m.rod_outer_radius = 0.0005;
+  m.rod_length = 0.02;
+  m.output_interval = 0.1;
+  return m;
+}
+
+// A frame log `name`.vlog in `dir` with metadata `m` (its rod moves as SyntheticLogSpec's does).
+inline std::string write_log(const ScratchDir& dir, const std::string& name, const LogMetadata& m) {
+  SyntheticLogSpec spec;
+  spec.cell = m.lumen_width > 0 ? m.lumen_width : spec.cell;
+  const std::string path = dir / (name + ".vlog");
+  write_synthetic_log(path, spec, m);
+  return path;
+}
 
 // A run directory holding frames.vlog from `spec`.
 inline std::string make_run(const ScratchDir& dir, const SyntheticLogSpec& spec, const std::string& name = "run") {
