@@ -2,6 +2,9 @@
 // through the same diff code as `vascsim diff`. Regenerate on purpose with scripts/update-goldens.
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <string>
+
 #include "render/plots.h"
 #include "render/png_writer.h"
 #include "render/render_run.h"
@@ -13,51 +16,40 @@ namespace {
 using testing::ScratchDir;
 namespace fs = std::filesystem;
 
-TEST(RenderGolden, FitFrameOfSerpentineMaze) {
-  ScratchDir dir("golden_fit");
-  SyntheticLogSpec spec;
-  const std::string run = testing::make_run(dir, spec);
+// One 320x240 frame of `run` (a run directory or a log) at time t (s), the fit camera unless
+// `view` says otherwise, compared with tests/golden/`golden`.
+void expect_frame_matches(const ScratchDir& dir, const std::string& run, double t, const std::string& golden,
+                          const std::function<void(View&)>& view = nullptr) {
   RenderOptions o;
   o.png_dir = dir / "png";
   o.view.width = 320;
   o.view.height = 240;
-  o.from = 0.5;
-  o.to = 0.5;
+  if (view) view(o.view);
+  o.from = t;
+  o.to = t;
   const RenderReport r = render_run(run, o);
   ASSERT_EQ(r.frames, 1u);
-  testing::expect_matches_golden(png_frame_path(o.png_dir, 0), "frame_fit_320x240.png");
+  testing::expect_matches_golden(png_frame_path(o.png_dir, 0), golden);
+}
+
+TEST(RenderGolden, FitFrameOfSerpentineMaze) {
+  ScratchDir dir("golden_fit");
+  expect_frame_matches(dir, testing::make_run(dir, SyntheticLogSpec{}), 0.5, "frame_fit_320x240.png");
 }
 
 TEST(RenderGolden, FollowCameraZoomedOnTip) {
   ScratchDir dir("golden_follow");
-  SyntheticLogSpec spec;
-  const std::string run = testing::make_run(dir, spec);
-  RenderOptions o;
-  o.png_dir = dir / "png";
-  o.view.width = 320;
-  o.view.height = 240;
-  o.view.camera = CameraMode::kFollow;
-  o.view.zoom = 2.5;
-  o.from = 1.0;
-  o.to = 1.0;
-  render_run(run, o);
-  testing::expect_matches_golden(png_frame_path(o.png_dir, 0), "frame_follow_320x240.png");
+  expect_frame_matches(dir, testing::make_run(dir, SyntheticLogSpec{}), 1.0, "frame_follow_320x240.png", [](View& v) {
+    v.camera = CameraMode::kFollow;
+    v.zoom = 2.5;
+  });
 }
 
 // A vessel network's look: the lumen filled between its rings (a ring-shaped vessel around a
 // hole), its walls, path and rod.
 TEST(RenderGolden, FitFrameOfARingVessel) {
   ScratchDir dir("golden_vessel");
-  const std::string log = testing::write_log(dir, "ring", testing::annulus_metadata());
-  RenderOptions o;
-  o.png_dir = dir / "png";
-  o.view.width = 320;
-  o.view.height = 240;
-  o.from = 0.5;
-  o.to = 0.5;
-  const RenderReport r = render_run(log, o);
-  ASSERT_EQ(r.frames, 1u);
-  testing::expect_matches_golden(png_frame_path(o.png_dir, 0), "frame_vessel_320x240.png");
+  expect_frame_matches(dir, testing::write_log(dir, "ring", testing::annulus_metadata()), 0.5, "frame_vessel_320x240.png");
 }
 
 TEST(RenderGolden, TipTrajectoryPlot) {
