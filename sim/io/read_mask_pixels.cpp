@@ -12,16 +12,18 @@ std::vector<std::uint8_t> load_mask_pixels(VesselMaskSpec& spec, const std::stri
     GreyImage image = load_grey_png(spec.resolved);
     spec.width = image.width;
     spec.height = image.height;
-    return std::move(image.grey);
+    std::vector<std::uint8_t> grey = std::move(image.grey);
+    spec.pixel_hash = mask_pixel_hash(spec.width, spec.height, grey);
+    return grey;
   } catch (const InputError& e) {
     // The PNG reader names the image; the scene file and its path say which field named it.
     throw InputError(scene_file + ": " + pointer + ": " + e.what());
   }
 }
 
-std::string mask_pixel_hash(const VesselMaskSpec& spec) {
-  std::string bytes = std::to_string(spec.width) + "x" + std::to_string(spec.height) + ":";
-  bytes.append(spec.grey.begin(), spec.grey.end());
+std::string mask_pixel_hash(int width, int height, const std::vector<std::uint8_t>& grey) {
+  std::string bytes = std::to_string(width) + "x" + std::to_string(height) + ":";
+  bytes.append(grey.begin(), grey.end());
   return scene_hash(bytes);
 }
 

@@ -113,8 +113,8 @@ void read_vessels(FieldReader& in, VesselsSpec& out) {
     out.mask.goal = in.vec2("goal", out.mask.goal);
     in.finish();
     out.mask.grey = load_mask_pixels(out.mask, in.file(), in.pointer_of("mask") + "/file");
-    if (!pixel_hash.empty() && pixel_hash != mask_pixel_hash(out.mask))
-      mask.fail("pixel_hash", "the hash of " + out.mask.resolved + " as it is now, " + mask_pixel_hash(out.mask) +
+    if (!pixel_hash.empty() && pixel_hash != out.mask.pixel_hash)
+      mask.fail("pixel_hash", "the hash of " + out.mask.resolved + " as it is now, " + out.mask.pixel_hash +
                                   " (the image changed since this scene was written)", pixel_hash);
     return;
   }
@@ -147,10 +147,8 @@ void read_vessels(FieldReader& in, VesselsSpec& out) {
 json write_vessels(const VesselsSpec& spec) {
   json j;
   if (spec.from_mask) {
-    j["mask"] = {{"file", spec.mask.file},
-                 {"pixel_size", spec.mask.pixel_size},
-                 {"threshold", spec.mask.threshold},
-                 {"pixel_hash", mask_pixel_hash(spec.mask)}};
+    j["mask"] = {{"file", spec.mask.file}, {"pixel_size", spec.mask.pixel_size}, {"threshold", spec.mask.threshold}};
+    if (!spec.mask.pixel_hash.empty()) j["mask"]["pixel_hash"] = spec.mask.pixel_hash;
     j["start"] = to_json(spec.mask.start);
     j["goal"] = to_json(spec.mask.goal);
     return j;

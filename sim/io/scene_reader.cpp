@@ -1,8 +1,8 @@
 #include "sim/io/scene_reader.h"
 
 #include <filesystem>
-#include <limits>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "sim/io/scene_sections.h"

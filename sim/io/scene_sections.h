@@ -12,12 +12,12 @@ namespace vascsim::io {
 
 void read_maze(FieldReader& in, MazeSpec& out);
 void read_vessels(FieldReader& in, VesselsSpec& out);
-// The mask's pixels, from spec.resolved; fills width and height. An InputError naming the scene
-// file, `pointer` and the image if it is unreadable, not a PNG or over 8192 px a side.
+// The mask's pixels, from spec.resolved; fills width, height and pixel_hash. An InputError naming
+// the scene file, `pointer` and the image if it is unreadable, not a PNG or over 8192 px a side.
 std::vector<std::uint8_t> load_mask_pixels(VesselMaskSpec& spec, const std::string& scene_file, const std::string& pointer);
 // The mask's pixels (size and grey levels) as 16 hex digits: the canonical scene carries it, so
 // that a scene hash names the image too and a scene re-read from a log notices a changed image.
-std::string mask_pixel_hash(const VesselMaskSpec& spec);
+std::string mask_pixel_hash(int width, int height, const std::vector<std::uint8_t>& grey);
 void read_path(FieldReader& in, PathSpec& out);
 void read_rod(FieldReader& in, RodSpec& out);
 void read_run(FieldReader& in, RunSpec& out);

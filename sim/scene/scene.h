@@ -76,6 +76,7 @@ struct VesselMaskSpec {
   // The image as read (by the scene reader): grey levels 0..255, row-major, row 0 at the top.
   int width = 0, height = 0;  // px
   std::vector<std::uint8_t> grey;
+  std::string pixel_hash;  // of the size and grey levels (set by the scene reader; io::mask_pixel_hash)
 };
 struct VesselsSpec {
   bool from_mask = false;  // true: `mask`; false: the graph below
