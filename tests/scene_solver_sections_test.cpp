@@ -32,9 +32,12 @@ TEST(SolverSections, PresetThenExplicitOverride) {
   EXPECT_EQ(m.solver.dt_mean_min, 0.0);
   EXPECT_EQ(m.solver.mean_burst, 5.0);
   EXPECT_EQ(m.solver.dt_floor, 1e-3) << "the balanced preset's hard floor stays";
+  EXPECT_EQ(s.solver.newton_stop_share, 0.3);
+  EXPECT_EQ(read_scene_text(R"({"maze": null, "solver": {"newton_stop_share": 0}})", "t.json").solver.newton_stop_share, 0.0);
   const std::pair<const char*, const char*> refused[] = {{R"({"maze": null, "solver": {"dt_floor": 0.5}})", "dt_floor"},
                                                           {R"({"maze": null, "solver": {"dt_mean_min": 0.5}})", "dt_mean_min"},
-                                                          {R"({"maze": null, "solver": {"mean_burst": -1}})", "mean_burst"}};
+                                                          {R"({"maze": null, "solver": {"mean_burst": -1}})", "mean_burst"},
+                                                          {R"({"maze": null, "solver": {"newton_stop_share": 2}})", "newton_stop_share"}};
   for (const auto& [text, key] : refused) {
     try {
       read_scene_text(text, "t.json");

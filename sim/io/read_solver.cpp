@@ -48,6 +48,7 @@ void read_solver(FieldReader& in, SolverSpec& out) {
   out.dt_floor = in.number("dt_floor", out.dt_floor, 0.0, out.dt_max);
   out.dt_mean_min = in.number("dt_mean_min", out.dt_mean_min, 0.0, out.dt_max);
   out.mean_burst = in.number("mean_burst", out.mean_burst, 0.0, 1e9);
+  out.newton_stop_share = in.number("newton_stop_share", out.newton_stop_share, 0.0, 1.0);
   out.rel_tol = in.positive("rel_tol", out.rel_tol, 1.0);
   out.abs_tol = in.number("abs_tol", out.abs_tol, 0.0, 1e9);
   out.step_tol = in.positive("step_tol", out.step_tol, 1.0);
@@ -76,6 +77,7 @@ json write_solver(const SolverSpec& spec) {
           {"dt_mean_min", spec.dt_mean_min},
           {"mean_burst", spec.mean_burst},
           {"dt_max", spec.dt_max},
+          {"newton_stop_share", spec.newton_stop_share},
           {"max_halvings", spec.max_halvings},
           {"load_steps", spec.load_steps},
           {"stable_branch", spec.stable_branch}};

@@ -88,7 +88,7 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
     // The paper's contact: re-solve the step with updated wall forces until no node is inside.
     const State start = state_;
     for (int k = 1;; ++k) {
-      report = step(*model_, state_, workspace_, controls, dt);
+      report = step(*model_, state_, workspace_, controls, dt, newton_stop());
       if (!report.ok) break;
       const PaperContactUpdate u = paper_contact_update(*navigation_->paper_walls, model_->rod.outer_radius, scene_.contact.paper_gain,
                                                         state_.x, wall_forces_);
@@ -102,7 +102,7 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
       controls.wall_forces = wall_forces_;
     }
   } else {
-    report = step(*model_, state_, workspace_, controls, dt);
+    report = step(*model_, state_, workspace_, controls, dt, newton_stop());
   }
   stats_.rejected_steps += report.rejected;
   if (report.rejected > 0) stats_.warnings.step_retried.note(t_start);
@@ -187,6 +187,14 @@ double Run::advance_controlled(double dt) {
     state_ = before;
     wall_forces_ = wall_forces_before;
   }
+}
+
+NewtonStopTolerance Run::newton_stop() const {
+  // The tolerances local_error() holds the step to, scaled by the share (positions: per second).
+  if (!step_size_) return {};
+  const double share = model_->solver.newton_stop_share;
+  const LocalErrorWeights& w = error_weights_;
+  return {share * (w.atol_position + w.rtol * w.length), share * (w.atol_velocity + w.rtol * w.speed)};
 }
 
 double Run::shortest_step() const { return std::max(model_->solver.dt_min, step_budget_->floor()); }

@@ -114,6 +114,7 @@ class Run {
   bool advance(double dt);
   double advance_controlled(double dt);
   double shortest_step() const;  // s, error control: the shortest step allowed now (dt_min or a floor)
+  NewtonStopTolerance newton_stop() const;
   bool solve_equilibrium(FrameSink& sink);
   void record(FrameSink& sink);
   void update_statistics(double dt, const Controls& controls);

@@ -262,6 +262,10 @@ struct SolverSpec {
   double dt_mean_min = 0.0;
   double mean_burst = 0.0;
   double dt_max = 0.02;                  // s, kError: largest step (output times also cut steps)
+  // kError: Newton also stops when its next correction, estimated with the last factorisation
+  // and then applied, is within this share of the step's error tolerance in every position and
+  // implied velocity (CVODE's test; sim/step/newton.cpp). 0: the residual test alone.
+  double newton_stop_share = 0.3;
   double rel_tol = 1e-6;                 // Newton: |residual|_inf <= rel_tol * force scale
   double abs_tol = 0.0;                  // N, Newton: or |residual|_inf <= abs_tol (0: off)
   double step_tol = 1e-12;               // Newton: or |dx|_inf <= step_tol * rod length (round-off)

@@ -54,6 +54,9 @@ struct NewtonProblem {
   double load_scale = 1.0;  // applied-load factor
   const Controls* controls = nullptr;
   const State* start = nullptr;
+  // m, error control only (0: off): also converged when the next Newton correction, estimated
+  // with the last factorisation, is at most this in every free degree of freedom.
+  double correction_tol = 0.0;
 };
 
 struct NewtonOutcome {
@@ -62,6 +65,7 @@ struct NewtonOutcome {
   double residual = 0.0;      // N, |r|_inf at the end
   double scale = 0.0;         // N, force scale at the end
   bool round_off_stop = false;  // stopped because the update fell below round-off
+  bool correction_stop = false;  // stopped by correction_tol
   std::string failure;        // why, when !converged
 };
 

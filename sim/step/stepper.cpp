@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace vascsim {
 
@@ -22,7 +23,10 @@ void set_targets(const Model& model, const Controls& controls, double t, Workspa
 
 namespace {
 
-bool attempt(const Model& model, State& state, Workspace& ws, const Controls& controls, double h, StepReport& report) {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+bool attempt(const Model& model, State& state, Workspace& ws, const Controls& controls, double h, const NewtonStopTolerance& stop,
+             StepReport& report) {
   // Scheme coefficients (see stepper.h).
   double a1 = 1.0, a2 = 0.0, beta = 1.0;
   if (step_order(model.solver.scheme, state, h) == 2) {
@@ -69,6 +73,10 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
   p.c = 1.0 / (beta * h);
   p.controls = &controls;
   p.start = &state;
+  // A zero tolerance leaves its quantity out of the test (as local_error leaves it uncontrolled).
+  const double by_position = stop.position_rate > 0.0 ? h * stop.position_rate : kInfinity;
+  const double by_velocity = stop.velocity > 0.0 ? beta * h * stop.velocity : kInfinity;
+  p.correction_tol = std::min(by_position, by_velocity) < kInfinity ? std::min(by_position, by_velocity) : 0.0;
   const NewtonOutcome out = newton_solve(model, p, ws);
   report.total_iterations += out.iterations;
   if (!out.converged) {
@@ -100,18 +108,20 @@ int step_order(Scheme scheme, const State& state, double h) {
   return scheme == Scheme::kBdf2 && state.h_prev > 0.0 && h <= kMaxBdf2StepRatio * state.h_prev ? 2 : 1;
 }
 
-StepReport step_once(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt) {
+StepReport step_once(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt,
+                     const NewtonStopTolerance& stop) {
   StepReport report;
-  report.ok = attempt(model, state, ws, controls, dt, report);
+  report.ok = attempt(model, state, ws, controls, dt, stop, report);
   return report;
 }
 
-StepReport step(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt) {
+StepReport step(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt,
+                const NewtonStopTolerance& stop) {
   StepReport report;
   const int retries = model.solver.adaptive == StepControl::kOff ? 0 : model.solver.max_halvings;
   double h = dt;
   for (int k = 0; k <= retries; ++k, h *= 0.5) {
-    if (attempt(model, state, ws, controls, h, report)) {
+    if (attempt(model, state, ws, controls, h, stop, report)) {
       report.ok = true;
       return report;
     }

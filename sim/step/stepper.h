@@ -46,10 +46,20 @@ inline constexpr double kMaxBdf2StepRatio = 2.0;
 // kMaxBdf2StepRatio times shorter, else 1 (backward Euler, also BDF2's first step).
 int step_order(Scheme scheme, const State& state, double h);
 
+// Under error control, how far from the exact solve a step may stop: Newton also ends when its
+// next correction is within h * position_rate in every position and within velocity in the
+// implied velocities (v = (x - x_hat) / (beta h)). Zeros: the residual test alone.
+struct NewtonStopTolerance {
+  double position_rate = 0.0;  // m/s
+  double velocity = 0.0;       // m/s
+};
+
 // One step of at most `dt` seconds from state.t, with `controls` held over the step.
-StepReport step(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt);
+StepReport step(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt,
+                const NewtonStopTolerance& stop = {});
 
 // As step(), but one attempt with exactly `dt` and no retry (used by tests and benchmarks).
-StepReport step_once(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt);
+StepReport step_once(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt,
+                     const NewtonStopTolerance& stop = {});
 
 }  // namespace vascsim
