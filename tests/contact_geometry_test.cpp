@@ -65,6 +65,24 @@ TEST(PointSegmentDistance, DerivativesMatchFiniteDifferencesInAllCases) {
   EXPECT_GT(cases[2], 20);
 }
 
+TEST(PointSegmentDistance, ValueAloneIsBitForBitTheDistance) {
+  // Contact drops a pair on point_segment_distance_value before computing derivatives, so a pair
+  // is kept or dropped exactly as the full evaluation would: the two must agree to the last bit,
+  // in every case (near the case boundaries too, and for a degenerate segment).
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 3000; ++trial) {
+    Vec6 y;
+    for (int i = 0; i < 6; ++i) y[i] = u(rng);
+    if (trial % 3 == 1) y.segment<2>(4) = y.segment<2>(2);  // a = b
+    if (trial % 3 == 2) y[0] = y[2] + 1e-12 * u(rng);       // near the end a
+    const Eigen::Vector2d p = y.segment<2>(0), a = y.segment<2>(2), b = y.segment<2>(4);
+    const double full = point_segment_distance(p, a, b, false).distance;
+    ASSERT_EQ(point_segment_distance_value(p, a, b), full) << "at " << y.transpose();
+    ASSERT_EQ(point_segment_distance(p, a, b, true).distance, full);
+  }
+}
+
 TEST(PointSegmentDistance, GradientIsContinuousAcrossCases) {
   // Crossing s = 0 (from the interior to the end a) must not jump the gradient (C1 distance).
   const Eigen::Vector2d a(0, 0), b(1, 0);

@@ -31,7 +31,11 @@ ContactGeometry::ContactGeometry(const std::vector<WallSegment>& walls, double r
       rod_radius_(rod_radius),
       reach_(reach),
       max_edge_length_(max_edge_length),
-      skin_(rod_radius + reach),
+      // Twice the contact distance: half the rebuilds of one contact distance for lists a little
+      // longer, whose extra pairs cost one distance each (for_each_pair drops them before their
+      // derivatives). maze_body_drag at fast: 2.5 % fewer instructions; three times: 0.5 % more on
+      // vessel_tree (many short wall segments).
+      skin_(2.0 * (rod_radius + reach)),
       // Queries reach a little beyond the barrier so max_step_fraction can see walls ahead.
       wall_field_(walls, 4.0 * (rod_radius + reach) + max_edge_length),
       corner_field_(corners_, 4.0 * (rod_radius + reach) + max_edge_length) {}
@@ -76,6 +80,7 @@ void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
     const Vec2 p = x.segment<2>(2 * i);
     for (int k = c.node_begin[static_cast<std::size_t>(i)]; k < c.node_begin[static_cast<std::size_t>(i) + 1]; ++k) {
       const WallSegment& w = walls_[static_cast<std::size_t>(c.node_walls[static_cast<std::size_t>(k)])];
+      if (point_segment_distance_value(p, w.a, w.b) - 0.5 * w.thickness - rod_radius_ >= reach_) continue;
       pair.first_dof = 2 * i;
       pair.is_edge = false;
       pair.geometry = point_segment_distance(p, w.a, w.b, with_hessian);
@@ -89,6 +94,7 @@ void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
     const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
     for (int k = c.edge_begin[static_cast<std::size_t>(i)]; k < c.edge_begin[static_cast<std::size_t>(i) + 1]; ++k) {
       const WallSegment& corner = corners_[static_cast<std::size_t>(c.edge_corners[static_cast<std::size_t>(k)])];
+      if (point_segment_distance_value(corner.a, a, b) - 0.5 * corner.thickness - rod_radius_ >= reach_) continue;
       pair.first_dof = 2 * i;
       pair.is_edge = true;
       pair.geometry = point_segment_distance(corner.a, a, b, with_hessian);
@@ -124,7 +130,7 @@ double ContactGeometry::min_gap(const Eigen::VectorXd& x, double search) const {
     edge_corner_candidates(a, b, radius, found);
     for (const int k : found) {
       const WallSegment& c = corners_[static_cast<std::size_t>(k)];
-      gap = std::min(gap, point_segment_distance(c.a, a, b, false).distance - 0.5 * c.thickness - rod_radius_);
+      gap = std::min(gap, point_segment_distance_value(c.a, a, b) - 0.5 * c.thickness - rod_radius_);
     }
   }
   return gap;
@@ -182,7 +188,7 @@ double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen:
     for (const int* k = first; k != last; ++k) {
       const WallSegment& corner = corners_[static_cast<std::size_t>(*k)];
       if (wall_hit(corner, *k, 0.5 * (a + b)).distance > radius) continue;  // as near() would
-      const double gap = point_segment_distance(corner.a, a, b, false).distance - 0.5 * corner.thickness - rod_radius_;
+      const double gap = point_segment_distance_value(corner.a, a, b) - 0.5 * corner.thickness - rod_radius_;
       if (move > safety * gap) alpha = std::min(alpha, safety * gap * alpha / move);
     }
   }

@@ -1,5 +1,6 @@
 #include "sim/contact/point_segment_distance.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vascsim {
@@ -27,6 +28,16 @@ void endpoint_case(const Vec2& p, const Vec2& c, int end_block, bool with_hessia
 }
 
 }  // namespace
+
+double point_segment_distance_value(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 e = b - a;
+  const Vec2 w = p - a;
+  const double beta = e.squaredNorm();
+  const double alpha = w.dot(e);
+  if (beta == 0.0 || alpha <= 0.0) return w.norm();
+  if (alpha >= beta) return (p - b).norm();
+  return std::sqrt(std::max(w.squaredNorm() - alpha * alpha / beta, 0.0));
+}
 
 // Interior case. With w = p - a, e = b - a, alpha = w.e, beta = e.e, the squared distance is
 //   f = w.w - alpha^2 / beta,

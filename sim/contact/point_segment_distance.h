@@ -24,4 +24,8 @@ struct PointSegmentDistance {
 PointSegmentDistance point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
                                             const Eigen::Vector2d& b, bool with_hessian = true);
 
+// The distance alone, bit for bit the one point_segment_distance returns: contact tests a pair
+// against its reach with it before paying for the derivatives (most listed pairs are out of reach).
+double point_segment_distance_value(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+
 }  // namespace vascsim

@@ -131,9 +131,8 @@ double SelfContactModule::max_step_fraction(const ForceContext& ctx, const Eigen
   // A pair can close by at most twice the largest motion: only pairs within that can limit.
   Cache scratch;
   for (const auto& [node, edge] : pairs_within(x, thickness_ + 2.0 * motion, cache_or(ctx, scratch))) {
-    const double gap = point_segment_distance(x.segment<2>(2 * node), x.segment<2>(2 * edge), x.segment<2>(2 * edge + 2), false)
-                           .distance -
-                       thickness_;
+    const double gap =
+        point_segment_distance_value(x.segment<2>(2 * node), x.segment<2>(2 * edge), x.segment<2>(2 * edge + 2)) - thickness_;
     const double closing = dx.segment<2>(2 * node).norm() +
                            std::max(dx.segment<2>(2 * edge).norm(), dx.segment<2>(2 * edge + 2).norm());
     if (closing > 0.0 && gap > 0.0) alpha = std::min(alpha, 0.8 * gap / closing);
