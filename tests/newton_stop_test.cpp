@@ -14,6 +14,9 @@
 #include "sim/io/scene_reader.h"
 #include "sim/run/compile.h"
 #include "sim/run/run.h"
+#include "sim/step/newton.h"
+#include "sim/step/stepper.h"
+#include "tests/rod_test_scenes.h"
 
 namespace vascsim {
 namespace {
@@ -82,6 +85,68 @@ TEST(NewtonStop, SavesIterationsWithoutMovingTheBodyFromTheReference) {
     EXPECT_LE(after, 1.1 * before + 1e-6) << name << ": body deviation " << after << " m against " << before << " m";
     EXPECT_GT(before, 0.0) << name;
   }
+}
+
+// A stiffening spring on the last node, F = -(k + c |d|^2) d with d = p - anchor, and its exact
+// Jacobian: nonlinear, so one Newton iteration does not reach the residual tolerance and the
+// correction stop is asked. Its max_step_fraction stands in for a wall barrier near a node: it
+// cuts every update to `cap` of itself.
+class StiffeningSpring : public ForceModule {
+ public:
+  explicit StiffeningSpring(double cap) : cap_(cap) {}
+  std::string channel() const override { return "force/test_spring"; }
+  void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override {
+    const int dof = static_cast<int>(ctx.x->size()) - 2;
+    const Eigen::Vector2d d = ctx.x->segment<2>(dof) - Eigen::Vector2d(1.05, 0.02);
+    const double k = 100.0, c = 4e4;  // N/m, N/m^3: the cubic term as strong as the linear one at 5 cm
+    force.segment<2>(dof) -= (k + c * d.squaredNorm()) * d;
+    if (stiffness)
+      stiffness->add_block<2>(dof, Eigen::Matrix2d((k + c * d.squaredNorm()) * Eigen::Matrix2d::Identity() +
+                                                   2.0 * c * d * d.transpose()));
+  }
+  double max_step_fraction(const ForceContext&, const Eigen::VectorXd& dx) const override {
+    return dx.lpNorm<Eigen::Infinity>() > 0.0 ? cap_ : 1.0;
+  }
+
+ private:
+  double cap_;
+};
+
+// One backward Euler step of 10 ms from rest, solved with the correction stop at a tolerance
+// (1 m) that any correction meets.
+NewtonOutcome solve_step_with_spring(double cap) {
+  Model model = build_model(test::axial_oscillator(Scheme::kBackwardEuler, 1e-8));
+  model.forces.push_back(std::make_shared<StiffeningSpring>(cap));
+  const State start = initial_state(model);
+  Workspace ws(model);
+  const Controls controls;
+  const double h = 0.01;
+  set_targets(model, controls, h, ws);
+  ws.x_hat = start.x;
+  ws.v_hat = start.v;
+  ws.x = start.x;
+  NewtonProblem p;
+  p.t = h;
+  p.c = 1.0 / h;
+  p.controls = &controls;
+  p.start = &start;
+  p.correction_tol = 1.0;
+  NewtonOutcome out = newton_solve(model, p, ws);
+  EXPECT_TRUE(out.converged) << out.failure;
+  return out;
+}
+
+TEST(NewtonStop, RefusedWhenAModuleWouldCutTheCorrection) {
+  // Applying a correction a barrier would cut could close a gap: Newton must go on instead, to
+  // the residual test (sim/step/newton.cpp, correction_converges).
+  const NewtonOutcome free = solve_step_with_spring(1.0);
+  EXPECT_TRUE(free.correction_stop);
+  EXPECT_EQ(free.iterations, 1);
+  const NewtonOutcome cut = solve_step_with_spring(0.99);
+  EXPECT_FALSE(cut.correction_stop);
+  EXPECT_GT(cut.iterations, 1);
+  EXPECT_FALSE(cut.round_off_stop);
+  EXPECT_LE(cut.residual, 1e-8 * cut.scale);  // by the residual test
 }
 
 }  // namespace
