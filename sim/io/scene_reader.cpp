@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "sim/io/bounded_read.h"
 #include "sim/io/scene_sections.h"
 #include "sim/scene/input_error.h"
 
@@ -93,11 +94,8 @@ Scene read_scene_file(const std::string& path) {
     throw InputError(path + ": not a regular file (a scene is read from a file, not a device or a pipe)");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path + ": cannot open scene file");
-  // Read at most one byte past the limit: enough to tell a too-large file from a large one.
-  std::string text(kMaxSceneBytes + 1, '\0');
-  file.read(text.data(), static_cast<std::streamsize>(text.size()));
+  const std::string text = io::read_at_most(file, kMaxSceneBytes);
   if (file.bad()) throw InputError(path + ": cannot read scene file");
-  text.resize(static_cast<std::size_t>(file.gcount()));
   if (text.size() > kMaxSceneBytes)
     throw InputError(path + ": larger than " + std::to_string(kMaxSceneBytes >> 20) + " MB, the limit for a scene file");
   return read_scene_text(text, path);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "sim/io/bounded_read.h"
 #include "sim/io/json_fields.h"
 #include "sim/scene/input_error.h"
 
@@ -176,10 +177,8 @@ SweepSpec read_sweep_file(const std::string& path) {
     throw InputError(path + ": not a regular file (a sweep is read from a JSON file)");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path + ": cannot open sweep file");
-  std::string text(kMaxSweepFileBytes + 1, '\0');
-  file.read(text.data(), static_cast<std::streamsize>(text.size()));
+  const std::string text = io::read_at_most(file, kMaxSweepFileBytes);
   if (file.bad()) throw InputError(path + ": cannot read sweep file");
-  text.resize(static_cast<std::size_t>(file.gcount()));
   if (text.size() > kMaxSweepFileBytes)
     throw InputError(path + ": larger than " + std::to_string(kMaxSweepFileBytes >> 20) + " MB, the limit for a sweep file");
   return read_sweep_text(text, path);
