@@ -33,7 +33,7 @@ ContactGeometry::ContactGeometry(const std::vector<WallSegment>& walls, double r
       max_edge_length_(max_edge_length),
       // Twice the contact distance: half the rebuilds of one contact distance for lists a little
       // longer, whose extra pairs cost one distance each (for_each_pair drops them before their
-      // derivatives). maze_body_drag at fast: 2.5 % fewer instructions; three times: 0.5 % more on
+      // derivatives). maze_body_drag at fast: 2.5 % fewer instructions; three times: 2.5 % more on
       // vessel_tree (many short wall segments).
       skin_(2.0 * (rod_radius + reach)),
       // Queries reach a little beyond the barrier so max_step_fraction can see walls ahead.
