@@ -93,7 +93,9 @@ TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
     ASSERT_EQ(got, want) << "trial " << trial;
     // The step cap reads the same lists for small moves and the grids for large ones.
     Eigen::VectorXd dx(2 * nodes);
-    const double move = trial % 3 == 0 ? 3e-3 : 1.7e-3;  // m, beyond and up to the lists' margin
+    // m, per coordinate: beyond and up to the lists' margin for a move, reach + skin/2 = 4 mm
+    // (skin 2 (r + reach), contact_pairs.cpp), a node moving up to sqrt 2 times this.
+    const double move = trial % 3 == 0 ? 6e-3 : 2.8e-3;
     for (int i = 0; i < 2 * nodes; ++i) dx[i] = move * jiggle(rng);
     ContactNeighbours fresh_for_step;
     ASSERT_EQ(geometry.max_step_fraction(x, dx, 0.5, reused), geometry.max_step_fraction(x, dx, 0.5, fresh_for_step))
@@ -144,6 +146,45 @@ TEST(WallFriction, OpposesSlidingAtACommittedState) {
   EXPECT_NEAR(tangential[0], -0.3 * normal[1], 1e-12 * normal[1]);
   EXPECT_EQ(tangential[1], 0.0);
   EXPECT_EQ(tangential.tail<4>().norm(), 0.0) << "nodes 1 and 2 touch nothing";
+}
+
+// Contact and friction on one geometry keep one set of neighbour lists in a run (SharedCaches,
+// keyed by the geometry): friction at the committed state reuses the lists contact built, and
+// both give what they give on lists of their own.
+TEST(WallFriction, SharesContactsNeighbourListsInARun) {
+  const RodModel rod = three_node_rod();
+  const ContactParams params{2e-3, 1e-3, 0.01, 0.3, 1e-4};
+  const std::vector<WallSegment> floor = {{Vec2(-0.05, -0.0025), Vec2(0.05, -0.0025), 0.0}};
+  const auto geometry = make_contact_geometry(floor, rod, params);
+  const WallContactModule contact(geometry, params);
+  const WallFrictionModule friction(geometry, params);
+  State state;
+  state.x.resize(6);
+  state.x << 0.0, 0.0003, 0.0098, 0.003, 0.0198, 0.003;
+  state.v.setZero(6);
+  state.v[0] = 0.01;
+  const Controls controls;
+  SharedCaches shared;
+  ForceContext ctx = ForceContext::at(state, controls);
+  ctx.shared = &shared;
+  Eigen::VectorXd normal = Eigen::VectorXd::Zero(6), tangential = Eigen::VectorXd::Zero(6);
+  contact.add(ctx, normal, nullptr);
+  const ContactNeighbours& lists = shared.of<ContactNeighboursCache>(geometry.get()).lists;
+  ASSERT_EQ(lists.anchor, state.x) << "contact built the run's lists at its positions";
+  const std::vector<int> walls_of_nodes = lists.node_walls;
+  friction.add(ctx, tangential, nullptr);
+  EXPECT_EQ(&lists, &shared.of<ContactNeighboursCache>(geometry.get()).lists);
+  EXPECT_EQ(lists.node_walls, walls_of_nodes);
+  // The same forces as without shared caches.
+  const ForceContext alone = ForceContext::at(state, controls);
+  Eigen::VectorXd normal_alone = Eigen::VectorXd::Zero(6), tangential_alone = Eigen::VectorXd::Zero(6);
+  contact.add(alone, normal_alone, nullptr);
+  friction.add(alone, tangential_alone, nullptr);
+  EXPECT_EQ(normal, normal_alone);
+  EXPECT_EQ(tangential, tangential_alone);
+  ASSERT_GT(normal[1], 0.0);
+  // Another owner has an entry of its own.
+  EXPECT_NE(&shared.of<ContactNeighboursCache>(&rod).lists, &lists);
 }
 
 TEST(WallContact, StepCapKeepsEveryGapOpen) {

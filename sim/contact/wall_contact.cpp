@@ -32,12 +32,11 @@ std::shared_ptr<const ContactGeometry> make_contact_geometry(const std::vector<W
   return std::make_shared<const ContactGeometry>(walls, params.rod_radius, params.g_hat, 2.0 * max_edge_length(rod));
 }
 
-struct WallContactModule::Cache : ModuleCache {
-  ContactNeighbours neighbours;
-};
+ContactNeighbours& run_neighbours(const ForceContext& ctx, const ContactGeometry& geometry, ContactNeighbours& fallback) {
+  return ctx.shared ? ctx.shared->of<ContactNeighboursCache>(&geometry).lists : fallback;
+}
 
 struct WallFrictionModule::Cache : ModuleCache {
-  ContactNeighbours neighbours;
   Eigen::VectorXd start;          // m, the start state the pairs were found for
   std::vector<LaggedPair> pairs;
 };
@@ -45,13 +44,10 @@ struct WallFrictionModule::Cache : ModuleCache {
 WallContactModule::WallContactModule(std::shared_ptr<const ContactGeometry> geometry, const ContactParams& params)
     : params_(params), geometry_(std::move(geometry)) {}
 
-std::unique_ptr<ModuleCache> WallContactModule::make_cache() const { return std::make_unique<Cache>(); }
-
 // E = sum over pairs of b(gap); gap = d(p, a, b) - t/2 - r, so
 //   F = -b'(gap) grad d,   K = b''(gap) grad d grad d^T + b'(gap) hess d   (projected to PSD).
 void WallContactModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const {
-  Cache scratch;
-  Cache& cache = cache_or(ctx, scratch);
+  ContactNeighbours scratch;
   geometry_->for_each_pair(*ctx.x, stiffness != nullptr, [&](const ContactPair& pair) {
     const BarrierValue b = contact_barrier(pair.gap, params_.g_hat, params_.kappa);
     if (b.first == 0.0) return;
@@ -70,7 +66,7 @@ void WallContactModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd>
         stiffness->add_block<4>(pair.first_dof, project_psd<4>(k));
       }
     }
-  }, cache.neighbours);
+  }, run_neighbours(ctx, *geometry_, scratch));
 }
 
 double WallContactModule::energy(const Eigen::VectorXd& x) const {
@@ -83,8 +79,8 @@ double WallContactModule::energy(const Eigen::VectorXd& x) const {
 }
 
 double WallContactModule::max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const {
-  Cache scratch;
-  return geometry_->max_step_fraction(*ctx.x, dx, 0.8, cache_or(ctx, scratch).neighbours);
+  ContactNeighbours scratch;
+  return geometry_->max_step_fraction(*ctx.x, dx, 0.8, run_neighbours(ctx, *geometry_, scratch));
 }
 
 WallFrictionModule::WallFrictionModule(std::shared_ptr<const ContactGeometry> geometry, const ContactParams& params)
@@ -92,15 +88,15 @@ WallFrictionModule::WallFrictionModule(std::shared_ptr<const ContactGeometry> ge
 
 std::unique_ptr<ModuleCache> WallFrictionModule::make_cache() const { return std::make_unique<Cache>(); }
 
-const std::vector<WallFrictionModule::LaggedPair>& WallFrictionModule::lagged_pairs(const Eigen::VectorXd& start,
-                                                                                    Cache& c) const {
+const std::vector<WallFrictionModule::LaggedPair>& WallFrictionModule::lagged_pairs(const Eigen::VectorXd& start, Cache& c,
+                                                                                    ContactNeighbours& lists) const {
   if (start.size() == c.start.size() && start == c.start) return c.pairs;
   c.start = start;
   c.pairs.clear();
   geometry_->for_each_pair(start, false, [&](const ContactPair& pair) {
     const double lambda = -contact_barrier(pair.gap, params_.g_hat, params_.kappa).first;  // N
     if (lambda > 0.0) c.pairs.push_back({pair.first_dof, lambda, Eigen::Vector2d(-pair.normal.y(), pair.normal.x())});
-  }, c.neighbours, /*nodes_only=*/true);
+  }, lists, /*nodes_only=*/true);
   return c.pairs;
 }
 
@@ -110,7 +106,8 @@ void WallFrictionModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd
   if (!ctx.start) return;
   const double eps = params_.slip_velocity;
   Cache scratch;
-  for (const LaggedPair& pair : lagged_pairs(ctx.start->x, cache_or(ctx, scratch))) {
+  ContactNeighbours scratch_lists;
+  for (const LaggedPair& pair : lagged_pairs(ctx.start->x, cache_or(ctx, scratch), run_neighbours(ctx, *geometry_, scratch_lists))) {
     const double vt = pair.tangent.dot(ctx.v->segment<2>(pair.first_dof));
     const double y = std::abs(vt) / eps;
     const double f1 = y < 1.0 ? 2.0 * y - y * y : 1.0;

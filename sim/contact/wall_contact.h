@@ -18,6 +18,13 @@ namespace vascsim {
 std::shared_ptr<const ContactGeometry> make_contact_geometry(const std::vector<WallSegment>& walls, const RodModel& rod,
                                                              const ContactParams& params);
 
+// The neighbour lists of a run for one geometry, shared by its users (SharedCaches, keyed by the
+// geometry): `fallback` when the context has no shared caches.
+struct ContactNeighboursCache : ModuleCache {
+  ContactNeighbours lists;
+};
+ContactNeighbours& run_neighbours(const ForceContext& ctx, const ContactGeometry& geometry, ContactNeighbours& fallback);
+
 class WallContactModule : public ForceModule {
  public:
   WallContactModule(std::shared_ptr<const ContactGeometry> geometry, const ContactParams& params);
@@ -27,14 +34,12 @@ class WallContactModule : public ForceModule {
   std::string channel() const override { return channel::kContactForce; }
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
   double max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const override;
-  std::unique_ptr<ModuleCache> make_cache() const override;
   // The barrier energy at positions x (J): what add() differentiates.
   double energy(const Eigen::VectorXd& x) const;
 
   const ContactGeometry& geometry() const { return *geometry_; }
 
  private:
-  struct Cache;
   ContactParams params_;
   std::shared_ptr<const ContactGeometry> geometry_;
 };
@@ -65,7 +70,7 @@ class WallFrictionModule : public ForceModule {
   // The pairs at the start of the step, kept in the run's cache: every Newton iteration of a
   // step asks for the same start state, so they are found once per step.
   struct Cache;
-  const std::vector<LaggedPair>& lagged_pairs(const Eigen::VectorXd& start, Cache& cache) const;
+  const std::vector<LaggedPair>& lagged_pairs(const Eigen::VectorXd& start, Cache& cache, ContactNeighbours& lists) const;
 
   ContactParams params_;
   std::shared_ptr<const ContactGeometry> geometry_;

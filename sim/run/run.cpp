@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "sim/contact/paper_contact.h"
+#include "sim/contact/wall_contact.h"
 #include "sim/log/channel_names.h"
 #include "sim/step/local_error.h"
 #include "sim/step/statics.h"
@@ -248,7 +249,8 @@ void Run::update_statistics(double dt, const Controls& controls) {
   // Gaps beyond the barrier's reach are not contact: only pairs within it are visited.
   double gap = std::numeric_limits<double>::infinity();
   navigation_->contact_geometry->for_each_pair(
-      state_.x, false, [&](const ContactPair& pair) { gap = std::min(gap, pair.gap); }, probe_neighbours_);
+      state_.x, false, [&](const ContactPair& pair) { gap = std::min(gap, pair.gap); },
+      workspace_.shared->of<ContactNeighboursCache>(navigation_->contact_geometry.get()).lists);
   stats_.min_gap = std::min(stats_.min_gap, gap);
   stats_.max_penetration = std::max(stats_.max_penetration, -stats_.min_gap);
   if (!std::isfinite(gap) && !navigation_->paper_walls) return;  // touching nothing: no wall force

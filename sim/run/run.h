@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include "sim/contact/contact_pairs.h"
 #include "sim/log/frame_log.h"
 #include "sim/run/navigation.h"
 #include "sim/step/model.h"
@@ -133,7 +132,6 @@ class Run {
   std::optional<StepBudget> step_budget_;            // error control only
   LocalErrorWeights error_weights_;
   std::vector<double> breakpoints_;                  // s, error control: where the reference's velocity or acceleration jumps
-  ContactNeighbours probe_neighbours_;               // the gap statistics' lists (every contact mode)
   State state_;
   Workspace workspace_;
   std::vector<LogChannel> channels_;

@@ -23,6 +23,7 @@
 #include <Eigen/SparseCore>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/step/banded_matrix.h"
@@ -35,6 +36,24 @@ namespace vascsim {
 // ForceModule::make_cache and handed back in ForceContext::cache.
 struct ModuleCache {
   virtual ~ModuleCache() = default;
+};
+
+// Per-run data of an immutable object that several modules share, one entry per object, made on
+// first use (the wall geometry's neighbour lists serve contact, friction and the run's gap
+// statistics: one set of lists, rebuilt once, instead of one per user). The Workspace keeps it.
+// An owner's entry always has one type: the code that owns the key decides it.
+class SharedCaches {
+ public:
+  template <class C>
+  C& of(const void* owner) {
+    for (auto& [key, cache] : entries_)
+      if (key == owner) return static_cast<C&>(*cache);
+    entries_.emplace_back(owner, std::make_unique<C>());
+    return static_cast<C&>(*entries_.back().second);
+  }
+
+ private:
+  std::vector<std::pair<const void*, std::unique_ptr<ModuleCache>>> entries_;
 };
 
 // Newton matrix entries outside the band: (row, column, value) with row > column + 5.
@@ -52,6 +71,7 @@ struct ForceContext {
   OffBandEntries* off_band = nullptr;     // where entries beyond the band go (null: none wanted)
   ModuleCache* cache = nullptr;           // the called module's cache in this run, or null (then a
                                           // module that keeps one works from scratch: slower, same answer)
+  SharedCaches* shared = nullptr;         // the run's caches of shared objects, or null (the same)
 
   // The context of a committed state, for the forces acting on it (a frame, a predictor): its
   // own time, positions and velocities, and itself as the start of the step.

@@ -39,11 +39,13 @@ struct Workspace {
   std::vector<char> fixed;   // (2N), 1 for a prescribed degree of freedom
   ElasticScratch elastic;
   std::vector<std::unique_ptr<ModuleCache>> caches;  // one per Model::forces entry (null: none)
+  std::unique_ptr<SharedCaches> shared = std::make_unique<SharedCaches>();
 };
 
 // `ctx` for force module k of `model`, with its cache in `ws`.
 inline ForceContext module_context(ForceContext ctx, const Workspace& ws, std::size_t k) {
   ctx.cache = ws.caches[k].get();
+  ctx.shared = ws.shared.get();
   return ctx;
 }
 
