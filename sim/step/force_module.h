@@ -14,9 +14,10 @@
 // converges linearly but still to the right answer, since convergence is judged on the residual.
 // Modules are immutable (const), so one Model can be shared by many runs and threads: per-step
 // inputs come in ForceContext (time, controls, the state at the start of the step for lagged
-// quantities), and what a module keeps between calls (contact neighbour lists, friction's lagged
-// pairs) lives in a ModuleCache it declares (make_cache) and the run's Workspace stores, as
-// Drake's systems declare cache entries that their Context holds.
+// quantities), and what a module keeps between calls (friction's lagged pairs) lives in a
+// ModuleCache it declares (make_cache) and the run's Workspace stores, as Drake's systems declare
+// cache entries that their Context holds; what several users of one object keep (the wall
+// geometry's neighbour lists) lives in the Workspace's SharedCaches, keyed by that object.
 #pragma once
 
 #include <Eigen/Core>
