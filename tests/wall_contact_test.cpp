@@ -174,7 +174,22 @@ TEST(WallFriction, SharesContactsNeighbourListsInARun) {
   const std::vector<int> walls_of_nodes = lists.node_walls;
   friction.add(ctx, tangential, nullptr);
   EXPECT_EQ(&lists, &shared.of<ContactNeighboursCache>(geometry.get()).lists);
-  EXPECT_EQ(lists.node_walls, walls_of_nodes);
+  EXPECT_EQ(lists.node_walls, walls_of_nodes) << "friction at the same positions must not rebuild them";
+  {
+    // Friction reads these lists, not lists of its own: emptied (still anchored here), it finds
+    // no wall and so no friction.
+    SharedCaches emptied;
+    ContactNeighbours& none = emptied.of<ContactNeighboursCache>(geometry.get()).lists;
+    none = lists;
+    std::fill(none.node_begin.begin(), none.node_begin.end(), 0);
+    none.node_walls.clear();
+    ForceContext ctx_emptied = ForceContext::at(state, controls);
+    ctx_emptied.shared = &emptied;
+    Eigen::VectorXd no_friction = Eigen::VectorXd::Zero(6);
+    friction.add(ctx_emptied, no_friction, nullptr);
+    ASSERT_GT(tangential.norm(), 0.0) << "with the lists, node 0 slides on the floor";
+    EXPECT_EQ(no_friction.norm(), 0.0);
+  }
   // The same forces as without shared caches.
   const ForceContext alone = ForceContext::at(state, controls);
   Eigen::VectorXd normal_alone = Eigen::VectorXd::Zero(6), tangential_alone = Eigen::VectorXd::Zero(6);

@@ -10,7 +10,7 @@
 
 namespace vascsim::io {
 
-// At most limit + 1 bytes of `in`, from its position to its end. Sets in's badbit on a read
+// At most limit + 1 bytes of `in` (limit < SIZE_MAX), from its position to its end. Sets in's badbit on a read
 // error, as istream::read does; the caller checks it.
 std::string read_at_most(std::istream& in, std::size_t limit);
 

@@ -39,6 +39,7 @@ struct Workspace {
   std::vector<char> fixed;   // (2N), 1 for a prescribed degree of freedom
   ElasticScratch elastic;
   std::vector<std::unique_ptr<ModuleCache>> caches;  // one per Model::forces entry (null: none)
+  // Behind a pointer: module_context() hands modules a mutable entry from a const Workspace.
   std::unique_ptr<SharedCaches> shared = std::make_unique<SharedCaches>();
 };
 
