@@ -18,7 +18,7 @@ TEST(SolverSections, PresetThenExplicitOverride) {
   // The presets control the error, with their former fixed step as the floor and first step.
   EXPECT_EQ(s.solver.adaptive, StepControl::kError);
   EXPECT_EQ(s.solver.dt_floor, 4e-3);
-  EXPECT_EQ(read_scene_text(R"({"maze": null})", "t.json").solver.rtol, 1.5e-4);
+  EXPECT_EQ(read_scene_text(R"({"maze": null})", "t.json").solver.rtol, 5e-5);
   // A scene that gives its dt and not its step control steps at that dt, as it did before.
   const Scene d = read_scene_text(R"({"maze": null, "solver": {"preset": "accurate", "dt": 1e-4}})", "t.json");
   EXPECT_EQ(d.solver.adaptive, StepControl::kRetry);

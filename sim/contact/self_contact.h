@@ -29,6 +29,7 @@ class SelfContactModule : public ForceModule {
   // Keeps every pair's gap open: a step may close at most 80 % of any gap, bounded by how fast the
   // gap can shrink (the node's and the farther edge end's displacement).
   double max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const override;
+  bool defined_at(const ForceContext& ctx) const override;
   std::unique_ptr<ModuleCache> make_cache() const override;
 
   // Node-edge pairs (node, first node of the edge) whose distance may be below `reach` (m).

@@ -83,6 +83,14 @@ double WallContactModule::max_step_fraction(const ForceContext& ctx, const Eigen
   return geometry_->max_step_fraction(*ctx.x, dx, 0.8, run_neighbours(ctx, *geometry_, scratch));
 }
 
+bool WallContactModule::defined_at(const ForceContext& ctx) const {
+  ContactNeighbours scratch;
+  bool open = true;
+  geometry_->for_each_pair(*ctx.x, false, [&](const ContactPair& pair) { open = open && pair.gap > 0.0; },
+                           run_neighbours(ctx, *geometry_, scratch));
+  return open;
+}
+
 WallFrictionModule::WallFrictionModule(std::shared_ptr<const ContactGeometry> geometry, const ContactParams& params)
     : params_(params), geometry_(std::move(geometry)) {}
 

@@ -34,6 +34,7 @@ class WallContactModule : public ForceModule {
   std::string channel() const override { return channel::kContactForce; }
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
   double max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const override;
+  bool defined_at(const ForceContext& ctx) const override;
   // The barrier energy at positions x (J): what add() differentiates.
   double energy(const Eigen::VectorXd& x) const;
 

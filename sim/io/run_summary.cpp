@@ -36,7 +36,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                       {"max", s.steps ? json(s.dt_max) : json(nullptr)},
                       {"mean", s.steps ? json(s.simulated_time / s.steps) : json(nullptr)}};
     if (scene.solver.adaptive == StepControl::kError)
-      j["error_control"] = {{"rejected_steps", s.error_rejected_steps}, {"error_max", s.error_max}};
+      j["error_control"] = {{"rejected_steps", s.error_rejected_steps}, {"error_max", s.error_max}, {"steps_cut_to_frames", s.steps_cut_to_frames}};
   }
   j["newton_iterations"] = {{"total", s.newton_iterations},
                             {"mean", s.steps ? static_cast<double>(s.newton_iterations) / s.steps : 0.0},

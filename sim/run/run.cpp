@@ -7,6 +7,7 @@
 #include "sim/contact/paper_contact.h"
 #include "sim/contact/wall_contact.h"
 #include "sim/log/channel_names.h"
+#include "sim/step/dense_output.h"
 #include "sim/step/local_error.h"
 #include "sim/step/statics.h"
 #include "sim/step/stepper.h"
@@ -141,9 +142,9 @@ bool Run::advance(double dt) {
 
 // Error control: the step is kept if its estimated local error is within tolerance, otherwise
 // the state goes back and a shorter step is tried. `dt` is the step the controller proposed
-// (already cut to the next output time); returns the step it proposes next, 0 on failure.
-double Run::advance_controlled(double dt) {
-  const State before = state_;
+// (already cut to the next breakpoint); returns the step it proposes next, 0 on failure.
+double Run::advance_controlled(double dt, std::size_t next_frame) {
+  State before = state_;
   const std::vector<NodeForce> wall_forces_before = wall_forces_;
   double h = dt;
   for (;;) {
@@ -163,12 +164,21 @@ double Run::advance_controlled(double dt) {
     // presets trade resolving an undamped body's every bounce for a bounded cost (docs/accuracy.md).
     const double floor = step_budget_->floor();
     const bool at_floor = report.dt <= floor * (1 + 1e-12);
+    if ((err <= 1.0 || at_floor) && !frames_interpolable(before, controls, next_frame)) {
+      // A frame inside the step would put the rod into a wall: land on the frame's time instead.
+      ++stats_.steps_cut_to_frames;
+      h = output_time(next_frame) - before.t;
+      state_ = before;
+      wall_forces_ = wall_forces_before;
+      continue;
+    }
     if (err <= 1.0 || at_floor) {
       if (err > 1.0) stats_.warnings.step_over_tolerance.note(before.t);
       commit(report, controls);
       step_budget_->spend(report.dt);
       error_weights_.speed = std::max(error_weights_.speed, state_.v.lpNorm<Eigen::Infinity>());
       if (err <= 1.0) stats_.error_max = std::max(stats_.error_max, err);
+      step_start_ = std::move(before);
       // The floor after this step: it may have spent the last credit, or earned some.
       return err < 0 ? report.dt : step_size_->accepted(report.dt, err, order, shortest_step());
     }
@@ -198,18 +208,32 @@ NewtonStopTolerance Run::newton_stop() const {
   return {share * (w.atol_position + w.rtol * w.length), share * (w.atol_velocity + w.rtol * w.speed)};
 }
 
+double Run::output_time(std::size_t frame) const {
+  return std::min(scene_.run.duration, static_cast<double>(frame) * scene_.run.output_interval);
+}
+
+bool Run::frames_interpolable(const State& start, const Controls& controls, std::size_t frame) const {
+  for (double t_out = output_time(frame); t_out < state_.t * (1.0 - 1e-12); t_out = output_time(++frame)) {
+    const State at = interpolate_in_step(start, state_, t_out);
+    const ForceContext ctx = ForceContext::at(at, controls);
+    for (std::size_t k = 0; k < model_->forces.size(); ++k)
+      if (!model_->forces[k]->defined_at(module_context(ctx, workspace_, k))) return false;
+  }
+  return true;
+}
+
 double Run::shortest_step() const { return std::max(model_->solver.dt_min, step_budget_->floor()); }
 
-Eigen::VectorXd Run::channel_force(const std::string& name, const Controls& controls) const {
-  const ForceContext ctx = ForceContext::at(state_, controls);
+Eigen::VectorXd Run::channel_force(const std::string& name, const Controls& controls, const State& at) const {
+  const ForceContext ctx = ForceContext::at(at, controls);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model_->dofs());
   for (std::size_t k = 0; k < model_->forces.size(); ++k)
     if (model_->forces[k]->channel() == name) model_->forces[k]->add(module_context(ctx, workspace_, k), f, nullptr);
   return f;
 }
 
-Eigen::VectorXd Run::logged_force(const std::string& name, const Controls& controls) const {
-  Eigen::VectorXd f = channel_force(name, controls);
+Eigen::VectorXd Run::logged_force(const std::string& name, const Controls& controls, const State& at) const {
+  Eigen::VectorXd f = channel_force(name, controls, at);
   if (navigation_ && name == channel::kActuationForce) navigation_->actuation->logged_force(last_command_, f);
   return f;
 }
@@ -237,7 +261,7 @@ void Run::update_statistics(double dt, const Controls& controls) {
   error_square_time_ += error * error * dt;
   stats_.tip_error_rms = std::sqrt(error_square_time_ / std::max(state_.t, 1e-300));
   // The magnetic force as applied at the end of the step (the servo is implicit).
-  const Vec2 actuation = logged_force(channel::kActuationForce, controls).reshaped(2, n).rowwise().sum();
+  const Vec2 actuation = logged_force(channel::kActuationForce, controls, state_).reshaped(2, n).rowwise().sum();
   stats_.actuation_force_max = std::max(stats_.actuation_force_max, actuation.norm());
   actuation_time_ += actuation.norm() * dt;
   stats_.actuation_force_mean = actuation_time_ / std::max(state_.t, 1e-300);
@@ -254,7 +278,7 @@ void Run::update_statistics(double dt, const Controls& controls) {
   stats_.min_gap = std::min(stats_.min_gap, gap);
   stats_.max_penetration = std::max(stats_.max_penetration, -stats_.min_gap);
   if (!std::isfinite(gap) && !navigation_->paper_walls) return;  // touching nothing: no wall force
-  const Eigen::VectorXd wall = channel_force(channel::kContactForce, controls);
+  const Eigen::VectorXd wall = channel_force(channel::kContactForce, controls, state_);
   for (int i = 0; i < n; ++i) {
     const double magnitude = wall.segment<2>(2 * i).norm();
     stats_.contact_force_max = std::max(stats_.contact_force_max, magnitude);
@@ -262,32 +286,33 @@ void Run::update_statistics(double dt, const Controls& controls) {
   }
 }
 
-void Run::record(FrameSink& sink) {
+void Run::record(FrameSink& sink, const State& frame) {
   std::vector<double> values;
-  values.reserve(channels_.size() * state_.x.size());
-  values.insert(values.end(), state_.x.data(), state_.x.data() + state_.x.size());
-  values.insert(values.end(), state_.v.data(), state_.v.data() + state_.v.size());
+  values.reserve(channels_.size() * frame.x.size());
+  values.insert(values.end(), frame.x.data(), frame.x.data() + frame.x.size());
+  values.insert(values.end(), frame.v.data(), frame.v.data() + frame.v.size());
   for (const auto& name : force_channels_) {
-    const Eigen::VectorXd f = logged_force(name, last_controls_);
+    const Eigen::VectorXd f = logged_force(name, last_controls_, frame);
     values.insert(values.end(), f.data(), f.data() + f.size());
   }
   if (navigation_) {
-    const Vec2 reference = navigation_->trajectory->position(controller_->reference_time(state_.t));
+    const Vec2 reference = navigation_->trajectory->position(controller_->reference_time(frame.t));
     values.push_back(reference.x());
     values.push_back(reference.y());
-    values.push_back((reference - state_.position(model_->nodes() - 1)).norm());
+    values.push_back((reference - frame.position(model_->nodes() - 1)).norm());
     if (scene_.control.advance.enabled()) {
+      // The drive's reaction is the last solve's: within a step the frame holds it.
       values.push_back(feed_force());
-      values.push_back(scene_.control.advance.fed_length(state_.t) - scene_.control.advance.fed_length(0.0));
+      values.push_back(scene_.control.advance.fed_length(frame.t) - scene_.control.advance.fed_length(0.0));
     }
   }
-  sink.write(state_.t, values);
+  sink.write(frame.t, values);
   ++stats_.frames;
 }
 
 bool Run::solve_equilibrium(FrameSink& sink) {
   const auto wall_start = Clock::now();
-  record(sink);
+  record(sink, state_);
   const StaticReport report = solve_static(*model_, state_, workspace_, last_controls_);
   stats_.steps = report.increments;
   stats_.rejected_steps = report.rejected;
@@ -299,7 +324,7 @@ bool Run::solve_equilibrium(FrameSink& sink) {
     // The load scale plays the part of time: 0 unloaded, 1 in equilibrium (docs/frame-log.md).
     state_.t = 1.0;
     stats_.simulated_time = state_.t;
-    record(sink);
+    record(sink, state_);
   } else {
     stats_.failed = true;
     stats_.failure = "static equilibrium: " + report.failure;
@@ -312,35 +337,40 @@ bool Run::run(FrameSink& sink, const std::function<void(double)>& progress) {
   if (model_->solver.mode == SolveMode::kStatic) return solve_equilibrium(sink);
   const auto wall_start = Clock::now();
   const double duration = scene_.run.duration;
-  const double interval = scene_.run.output_interval;
   const bool controlled = model_->solver.adaptive == StepControl::kError;
-  double proposed = model_->solver.dt;  // error control: the controller's next step
-  record(sink);
+  // Error control: the controller's next step, first the scene's dt (no longer than dt_max).
+  double proposed = controlled ? std::min(model_->solver.dt, model_->solver.dt_max) : model_->solver.dt;
+  record(sink, state_);
   std::size_t next_frame = 1, next_break = 0;
-  bool ok = true;
+  bool ok = true, frames_done = false;
   while (state_.t < duration * (1.0 - 1e-12)) {
-    // Steps land exactly on output times, so that every frame is a converged state (an
-    // interpolated one could put the rod inside a wall, where the barrier is infinite) and
-    // frames are evenly spaced. Error control halves the distance rather than leave a sliver.
-    const double next_output = std::min(duration, static_cast<double>(next_frame) * interval);
-    // Error control also ends a step where the controller's inputs jump (breakpoints_).
-    const bool at_break = next_break < breakpoints_.size() && breakpoints_[next_break] < next_output;
-    const double stop = at_break ? breakpoints_[next_break] : next_output;
-    const double remaining = stop - state_.t;
-    double h = std::min(proposed, remaining);
-    if (controlled && h < remaining && h > 0.5 * remaining) h = 0.5 * remaining;
-    if (controlled) {
+    if (!controlled) {
+      // Fixed steps land exactly on output times, so that frames are evenly spaced.
+      const double h = std::min(proposed, output_time(next_frame) - state_.t);
+      if (!advance(h)) {
+        ok = false;
+        break;
+      }
+    } else {
+      // Error control steps over output times (their frames come from the step's interpolant,
+      // sim/step/dense_output.h) but ends a step where the controller's inputs jump
+      // (breakpoints_) and at the end of the run, halving the distance rather than leave a sliver.
+      const bool at_break = next_break < breakpoints_.size() && breakpoints_[next_break] < duration;
+      const double stop = at_break ? breakpoints_[next_break] : duration;
+      const double remaining = stop - state_.t;
+      double h = std::min(proposed, remaining);
+      if (h < remaining && h > 0.5 * remaining) h = 0.5 * remaining;
       const int rejections = stats_.error_rejected_steps;
-      const double next = advance_controlled(h);
+      const double next = advance_controlled(h, next_frame);
       if (next <= 0.0) {
         ok = false;
         break;
       }
-      // A step cut short by an output time does not shrink the ones after it.
+      // A step cut short (a breakpoint, the end, a frame) does not shrink the ones after it.
       proposed = h < proposed && stats_.error_rejected_steps == rejections ? std::max(next, proposed) : next;
       if (state_.h_prev < 1e-3 * proposed) {
-        // A sliver (an output time just after a breakpoint) predicts nothing: its difference
-        // quotients are round-off. The history starts again after it.
+        // A sliver (a step cut to a frame just after a breakpoint) predicts nothing: its
+        // difference quotients are round-off. The history starts again after it.
         state_.h_prev = state_.h_prev2 = 0.0;
       }
       if (at_break && state_.t >= stop * (1.0 - 1e-12)) {
@@ -350,14 +380,14 @@ bool Run::run(FrameSink& sink, const std::function<void(double)>& progress) {
         state_.h_prev = state_.h_prev2 = 0.0;
         proposed = std::min(proposed, model_->solver.dt);
       }
-    } else if (!advance(h)) {
-      ok = false;
-      break;
     }
-    if (state_.t >= next_output * (1.0 - 1e-12)) {
-      record(sink);
-      ++next_frame;
-      if (progress) progress(state_.t);
+    // The frames this step reached: at its end, or inside it (error control only).
+    for (double t_out = output_time(next_frame); !frames_done && t_out <= state_.t * (1.0 + 1e-12);
+         t_out = output_time(++next_frame)) {
+      if (t_out >= state_.t * (1.0 - 1e-12)) record(sink, state_);
+      else record(sink, interpolate_in_step(step_start_, state_, t_out));
+      if (progress) progress(t_out);
+      frames_done = t_out >= duration;
     }
   }
   stats_.wall_time = std::chrono::duration<double>(Clock::now() - wall_start).count();

@@ -56,6 +56,7 @@ struct RunStatistics {
   int newton_iterations_max = 0;     // in one step
   int rejected_steps = 0;            // attempts retried with a smaller dt (Newton failed)
   int error_rejected_steps = 0;      // error control: converged steps over the tolerance, retried shorter
+  int steps_cut_to_frames = 0;       // error control: steps retried to end on a frame that interpolation would put into a wall
   double error_max = 0.0;            // error control: largest accepted error estimate / tolerance (above the floor)
   double dt_min = std::numeric_limits<double>::infinity();  // s, shortest step taken
   double dt_max = 0.0;               // s, longest step taken
@@ -111,18 +112,23 @@ class Run {
   // Counts the step just taken in the statistics.
   void commit(const StepReport& report, const Controls& controls);
   bool advance(double dt);
-  double advance_controlled(double dt);
+  double advance_controlled(double dt, std::size_t next_frame);
   double shortest_step() const;  // s, error control: the shortest step allowed now (dt_min or a floor)
+  // s, the time of frame `frame` (0: the start); the last is at the run's duration.
+  double output_time(std::size_t frame) const;
+  // Error control: whether every frame from `frame` on that falls inside the step just taken
+  // (from `start` to state_) can be interpolated, that is, keeps every barrier's gap open.
+  bool frames_interpolable(const State& start, const Controls& controls, std::size_t frame) const;
   NewtonStopTolerance newton_stop() const;
   bool solve_equilibrium(FrameSink& sink);
-  void record(FrameSink& sink);
+  void record(FrameSink& sink, const State& frame);
   void update_statistics(double dt, const Controls& controls);
   double feed_force() const;  // N, control.advance
   // The force of every module writing channel `name`, at the committed state.
-  Eigen::VectorXd channel_force(const std::string& name, const Controls& controls) const;
+  Eigen::VectorXd channel_force(const std::string& name, const Controls& controls, const State& at) const;
   // What the log and the statistics report for channel `name`: the modules' force, with the
   // actuation's own estimate for the magnetic force where it has no module.
-  Eigen::VectorXd logged_force(const std::string& name, const Controls& controls) const;
+  Eigen::VectorXd logged_force(const std::string& name, const Controls& controls, const State& at) const;
 
   std::shared_ptr<const Model> model_;
   const Scene& scene_;            // model_->scene
@@ -133,6 +139,7 @@ class Run {
   LocalErrorWeights error_weights_;
   std::vector<double> breakpoints_;                  // s, error control: where the reference's velocity or acceleration jumps
   State state_;
+  State step_start_;                                 // error control: where the last step started, for frames inside it
   Workspace workspace_;
   std::vector<LogChannel> channels_;
   std::vector<std::string> force_channels_;          // distinct module channels, in log order

@@ -284,9 +284,9 @@ inline bool apply_solver_preset(const std::string& name, SolverSpec& s) {
   s.adaptive = StepControl::kError;
   s.atol_position = 1e-6;
   s.dt_max = 0.02;
-  if (name == "fast") { s.dt = s.dt_floor = 4e-3; s.dt_mean_min = 1e-2; s.rtol = 1e-3; s.atol_velocity = 1e-3; s.rel_tol = 1e-4; }
-  else if (name == "balanced") { s.dt = s.dt_floor = 1e-3; s.dt_mean_min = 5e-3; s.rtol = 1.5e-4; s.atol_velocity = 1e-3; s.rel_tol = 1e-5; }
-  else if (name == "accurate") { s.dt = s.dt_floor = 2.5e-4; s.dt_mean_min = 7e-4; s.rtol = 1e-5; s.atol_velocity = 1e-4; s.rel_tol = 1e-8; }
+  if (name == "fast") { s.dt = s.dt_floor = 4e-3; s.dt_mean_min = 1e-2; s.rtol = 5e-4; s.atol_velocity = 1e-3; s.rel_tol = 1e-4; }
+  else if (name == "balanced") { s.dt = s.dt_floor = 1e-3; s.dt_mean_min = 3e-3; s.rtol = 5e-5; s.atol_velocity = 1e-3; s.rel_tol = 1e-5; }
+  else if (name == "accurate") { s.dt = s.dt_floor = 2.5e-4; s.dt_mean_min = 7e-4; s.rtol = 1e-5; s.atol_velocity = 1e-4; s.rel_tol = 1e-8; s.dt_max = 5e-3; }
   else return false;
   // Credit for 10 s of simulated time below the mean floor: enough for the impacts of the damped
   // traversal (maze_body_drag keeps the error it has without a mean floor), not for an undamped

@@ -102,6 +102,13 @@ class ForceModule {
     (void)dx;
     return 1.0;
   }
+  // Whether the force is defined at the context's positions (a barrier: every gap open). The run
+  // asks it of a frame interpolated inside a step (sim/step/dense_output.h), which, unlike a
+  // Newton iterate, no step cap has kept out of the walls.
+  virtual bool defined_at(const ForceContext& ctx) const {
+    (void)ctx;
+    return true;
+  }
   // The cache this module keeps between calls within one run, or null if it keeps none.
   virtual std::unique_ptr<ModuleCache> make_cache() const { return nullptr; }
 };
