@@ -261,7 +261,7 @@ struct SolverSpec {
   // bounded cost while brief impacts are resolved (sim/step/step_budget.h, docs/accuracy.md).
   double dt_mean_min = 0.0;
   double mean_burst = 0.0;
-  double dt_max = 0.02;                  // s, kError: largest step (output times also cut steps)
+  double dt_max = 0.02;                  // s, kError: largest step (breakpoints also end steps; frames are interpolated)
   // kError: Newton also stops when its next correction, estimated with the last factorisation
   // and then applied, is within this share of the step's error tolerance in every position and
   // implied velocity (CVODE's test; sim/step/newton.cpp). 0: the residual test alone.
