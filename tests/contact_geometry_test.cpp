@@ -2,6 +2,7 @@
 // differences, symmetry, and the barrier's defining properties (IPC, Li et al. 2020).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "sim/contact/barrier.h"
@@ -89,6 +90,31 @@ TEST(PointSegmentDistance, GradientIsContinuousAcrossCases) {
   const auto inside = point_segment_distance({1e-9, 0.3}, a, b);
   const auto outside = point_segment_distance({-1e-9, 0.3}, a, b);
   EXPECT_LT((inside.gradient - outside.gradient).norm(), 1e-7);
+}
+
+// Against the smallest of 2001 x 2001 sampled point pairs (an upper bound within the sampling's
+// resolution), on random segments, crossing ones included.
+TEST(SegmentSegmentDistance, MatchesSampledMinimumAndIsZeroWhenTheSegmentsCross) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int crossing = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const Eigen::Vector2d p0(u(rng), u(rng)), p1(u(rng), u(rng)), a(u(rng), u(rng)), b(u(rng), u(rng));
+    const double d = segment_segment_distance(p0, p1, a, b);
+    double sampled = 1e9;
+    for (int i = 0; i <= 2000; ++i) {
+      const Eigen::Vector2d p = p0 + (i / 2000.0) * (p1 - p0);
+      sampled = std::min(sampled, point_segment_distance_value(p, a, b));
+    }
+    EXPECT_LE(d, sampled + 1e-12) << "trial " << trial;
+    EXPECT_GE(d, sampled - 2e-3) << "trial " << trial;  // the samples are 1e-3 apart at most
+    EXPECT_GE(d, 0.0);
+    if (sampled < 1e-3) crossing += d == 0.0;
+  }
+  EXPECT_GT(crossing, 5) << "too few crossing pairs to test that case";
+  // Parallel segments side by side, and a move ending exactly on the segment.
+  EXPECT_DOUBLE_EQ(segment_segment_distance({0, 1}, {2, 1}, {0.5, 0}, {1.5, 0}), 1.0);
+  EXPECT_DOUBLE_EQ(segment_segment_distance({1, 1}, {1, 0}, {0, 0}, {2, 0}), 0.0);
 }
 
 TEST(ContactBarrier, ZeroBeyondActivationAndDerivativesMatch) {

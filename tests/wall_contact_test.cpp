@@ -202,6 +202,15 @@ TEST(WallFriction, SharesContactsNeighbourListsInARun) {
   EXPECT_NE(&shared.of<ContactNeighboursCache>(&rod).lists, &lists);
 }
 
+// The smallest gap over the straight move from x to x + dx, sampled finely (m).
+double smallest_gap_along(const WallContactModule& module, const Eigen::VectorXd& x, const Eigen::VectorXd& dx) {
+  double gap = module.geometry().min_gap(x, 1.0);
+  for (int k = 1; k <= 200; ++k) gap = std::min(gap, module.geometry().min_gap(x + (k / 200.0) * dx, 1.0));
+  return gap;
+}
+
+// The cap keeps every gap open all along the move, not only at its end (a move that could close
+// a gap keeps a share, 1 - 0.8, of it): a barrier must never see a closed gap.
 TEST(WallContact, StepCapKeepsEveryGapOpen) {
   const RodModel rod = three_node_rod();
   const ContactParams params{2e-3, 5e-4, 0.01, 0.0, 1e-4};
@@ -221,8 +230,38 @@ TEST(WallContact, StepCapKeepsEveryGapOpen) {
     const double alpha = module.max_step_fraction(ctx, dx);
     ASSERT_GE(alpha, 0.0);
     ASSERT_LE(alpha, 1.0);
-    EXPECT_GT(module.geometry().min_gap(x + alpha * dx, 1.0), 0.0) << "trial " << trial;
+    EXPECT_GT(smallest_gap_along(module, x, alpha * dx), 0.0) << "trial " << trial;
   }
+}
+
+// A rod lying along a floor, or an edge passing under a wall's corner, may slide far in one step: the
+// cap bounds how close a move comes to a wall, not how long it is (a bound by the move's length
+// cut the steps of a rod sliding along a wall and cost Newton iterations, docs/contact.md). A
+// move towards the wall is still cut.
+TEST(WallContact, StepCapLetsTheRodSlideAlongAWallAndPastACorner) {
+  const RodModel rod = three_node_rod();  // 0.02 m long, outer radius 2 mm
+  const ContactParams params{2e-3, 5e-4, 0.01, 0.0, 1e-4};
+  // A floor whose surface is 0.3 mm below the rod's, and a wall ending 0.4 mm above the rod's
+  // middle edge's surface at x = 0.005 (its end is a corner).
+  const double r = rod.outer_radius;
+  const std::vector<WallSegment> walls = {{Vec2(-1, -r - 3e-4), Vec2(1, -r - 3e-4), 0.0},
+                                          {Vec2(0.005, r + 4e-4), Vec2(0.005, 1.0), 0.0}};
+  WallContactModule module(walls, rod, params);
+  Eigen::VectorXd x(6);
+  x << 0.0, 0.0, 0.01, 0.0, 0.02, 0.0;
+  ForceContext ctx;
+  ctx.x = &x;
+  ASSERT_NEAR(module.geometry().min_gap(x, 1.0), 3e-4, 1e-12);
+  Eigen::VectorXd along(6), towards(6);
+  // 2.5 mm along the floor (8x the gap; within the neighbour lists' reach), the first edge under
+  // the corner all the way.
+  along << 2.5e-3, 0.0, 2.5e-3, 0.0, 2.5e-3, 0.0;
+  towards << 0.0, -3.5e-4, 0.0, -3.5e-4, 0.0, -3.5e-4;  // through the floor
+  EXPECT_EQ(module.max_step_fraction(ctx, along), 1.0);
+  EXPECT_GT(smallest_gap_along(module, x, along), 0.2 * 3e-4);
+  const double cut = module.max_step_fraction(ctx, towards);
+  EXPECT_LT(cut, 1.0);
+  EXPECT_GT(smallest_gap_along(module, x, cut * towards), 0.2 * 3e-4 * (1 - 1e-9));
 }
 
 TEST(TipMagnet, GradientAndHessianMatchFiniteDifferencesAndTorque) {

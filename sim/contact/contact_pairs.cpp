@@ -136,6 +136,28 @@ double ContactGeometry::min_gap(const Eigen::VectorXd& x, double search) const {
   return gap;
 }
 
+namespace {
+
+double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
+
+bool in_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
+  const double s0 = cross(b - a, p - a), s1 = cross(c - b, p - b), s2 = cross(a - c, p - c);
+  return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+}
+
+// The distance from p to the convex hull of q0..q3 (0 inside). In the plane every point of the
+// hull lies in a triangle of three of the points, and the hull's edges are among the six
+// segments between them, the others lying inside it.
+double distance_to_hull(const Vec2& p, const Vec2& q0, const Vec2& q1, const Vec2& q2, const Vec2& q3) {
+  if (in_triangle(p, q0, q1, q2) || in_triangle(p, q0, q1, q3) || in_triangle(p, q0, q2, q3) || in_triangle(p, q1, q2, q3))
+    return 0.0;
+  return std::min({point_segment_distance_value(p, q0, q1), point_segment_distance_value(p, q0, q2),
+                   point_segment_distance_value(p, q0, q3), point_segment_distance_value(p, q1, q2),
+                   point_segment_distance_value(p, q1, q3), point_segment_distance_value(p, q2, q3)});
+}
+
+}  // namespace
+
 double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx, double safety,
                                           ContactNeighbours& c) const {
   const int nodes = static_cast<int>(x.size() / 2);
@@ -157,17 +179,26 @@ double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen:
     if (move == 0.0) continue;
     const Vec2 p = x.segment<2>(2 * i);
     double gap = std::numeric_limits<double>::infinity();
+    // The closest the node comes to a listed wall along its move (exact for a straight move).
+    double path_gap = std::numeric_limits<double>::infinity();
     if (move <= listed_move) {
+      const Vec2 end = p + alpha * dx.segment<2>(2 * i);
       for (int k = c.node_begin[static_cast<std::size_t>(i)]; k < c.node_begin[static_cast<std::size_t>(i) + 1]; ++k) {
         const int w = c.node_walls[static_cast<std::size_t>(k)];
-        const double distance = wall_hit(walls_[static_cast<std::size_t>(w)], w, p).distance;
-        if (distance <= move + rod_radius_) gap = std::min(gap, distance - rod_radius_);  // as nearest() would
+        const WallSegment& wall = walls_[static_cast<std::size_t>(w)];
+        const double distance = wall_hit(wall, w, p).distance;
+        if (distance > move + rod_radius_) continue;  // as nearest() would
+        gap = std::min(gap, distance - rod_radius_);
+        path_gap = std::min(path_gap, segment_segment_distance(p, end, wall.a, wall.b) - 0.5 * wall.thickness - rod_radius_);
       }
     } else if (wall_field_.nearest(p, move + rod_radius_, hit)) {
       gap = hit.distance - rod_radius_;
+      path_gap = -1.0;  // not computed: the bound below
     }
-    // The gap shrinks at most as fast as the node moves: keep a `safety` share of it.
-    if (move > safety * gap) alpha = std::min(alpha, safety * gap / dx.segment<2>(2 * i).norm());
+    // Keep a `safety` share of the gap all along the move. A move that slides past the walls
+    // keeps it whatever its length; otherwise the gap shrinks at most as fast as the node moves.
+    if (move > safety * gap && path_gap < (1.0 - safety) * gap)
+      alpha = std::min(alpha, safety * gap / dx.segment<2>(2 * i).norm());
   }
   std::vector<int> listed;
   for (int i = 0; i + 1 < nodes; ++i) {
@@ -185,11 +216,16 @@ double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen:
       last = listed.data() + listed.size();
     }
     const double radius = 0.5 * (b - a).norm() + move + rod_radius_;
+    const Vec2 a_end = a + alpha * dx.segment<2>(2 * i), b_end = b + alpha * dx.segment<2>(2 * i + 2);
     for (const int* k = first; k != last; ++k) {
       const WallSegment& corner = corners_[static_cast<std::size_t>(*k)];
       if (wall_hit(corner, *k, 0.5 * (a + b)).distance > radius) continue;  // as near() would
       const double gap = point_segment_distance_value(corner.a, a, b) - 0.5 * corner.thickness - rod_radius_;
-      if (move > safety * gap) alpha = std::min(alpha, safety * gap * alpha / move);
+      if (move <= safety * gap) continue;
+      // The edge sweeps a region inside the hull of its two positions: a corner that stays far
+      // enough from that hull keeps its gap whatever the move's length.
+      const double swept = distance_to_hull(corner.a, a, b, a_end, b_end) - 0.5 * corner.thickness - rod_radius_;
+      if (swept < (1.0 - safety) * gap) alpha = std::min(alpha, safety * gap * alpha / move);
     }
   }
   return std::max(alpha, 0.0);

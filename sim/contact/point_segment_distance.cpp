@@ -39,6 +39,19 @@ double point_segment_distance_value(const Vec2& p, const Vec2& a, const Vec2& b)
   return std::sqrt(std::max(w.squaredNorm() - alpha * alpha / beta, 0.0));
 }
 
+namespace {
+double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
+}  // namespace
+
+double segment_segment_distance(const Vec2& p0, const Vec2& p1, const Vec2& a, const Vec2& b) {
+  // Two segments in the plane that do not cross are closest at an end of one of them.
+  const double d0 = cross(b - a, p0 - a), d1 = cross(b - a, p1 - a);
+  const double d2 = cross(p1 - p0, a - p0), d3 = cross(p1 - p0, b - p0);
+  if (((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0)) && ((d2 > 0 && d3 < 0) || (d2 < 0 && d3 > 0))) return 0.0;
+  return std::min(std::min(point_segment_distance_value(p0, a, b), point_segment_distance_value(p1, a, b)),
+                  std::min(point_segment_distance_value(a, p0, p1), point_segment_distance_value(b, p0, p1)));
+}
+
 // Interior case. With w = p - a, e = b - a, alpha = w.e, beta = e.e, the squared distance is
 //   f = w.w - alpha^2 / beta,
 //   df/dw = 2 w - 2 alpha e / beta,          df/de = -2 alpha w / beta + 2 alpha^2 e / beta^2,

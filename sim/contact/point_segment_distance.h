@@ -28,4 +28,10 @@ PointSegmentDistance point_segment_distance(const Eigen::Vector2d& p, const Eige
 // against its reach with it before paying for the derivatives (most listed pairs are out of reach).
 double point_segment_distance_value(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 
+// The distance between segments [p0, p1] and [a, b] (0 if they cross or touch): the closest a
+// point moving in a straight line from p0 to p1 comes to segment ab. Contact's step cap uses it
+// to let a node slide along a wall instead of bounding the gap's shrinking by the whole move.
+double segment_segment_distance(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& a,
+                                const Eigen::Vector2d& b);
+
 }  // namespace vascsim
