@@ -117,6 +117,17 @@ TEST(SegmentSegmentDistance, MatchesSampledMinimumAndIsZeroWhenTheSegmentsCross)
   EXPECT_DOUBLE_EQ(segment_segment_distance({1, 1}, {1, 0}, {0, 0}, {2, 0}), 0.0);
 }
 
+// The hull of a unit square given in any order, and of a degenerate (collinear) set.
+TEST(PointHullDistance, ZeroInsideAndTheNearestEdgeOutside) {
+  const Eigen::Vector2d a(0, 0), b(1, 0), c(1, 1), d(0, 1);
+  EXPECT_EQ(point_hull_distance({0.5, 0.5}, a, c, b, d), 0.0);
+  EXPECT_EQ(point_hull_distance({0.0, 0.3}, b, d, a, c), 0.0);  // on the boundary
+  EXPECT_DOUBLE_EQ(point_hull_distance({0.5, 1.5}, a, b, c, d), 0.5);
+  EXPECT_DOUBLE_EQ(point_hull_distance({2.0, 2.0}, d, c, a, b), std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(point_hull_distance({-3.0, 0.5}, a, c, d, b), 3.0);
+  EXPECT_DOUBLE_EQ(point_hull_distance({0.5, 0.25}, a, b, {2, 0}, {3, 0}), 0.25);
+}
+
 TEST(ContactBarrier, ZeroBeyondActivationAndDerivativesMatch) {
   const double g_hat = 1e-3, kappa = 2.0;
   EXPECT_EQ(contact_barrier(g_hat, g_hat, kappa).energy, 0.0);

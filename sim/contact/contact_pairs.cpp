@@ -136,28 +136,6 @@ double ContactGeometry::min_gap(const Eigen::VectorXd& x, double search) const {
   return gap;
 }
 
-namespace {
-
-double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
-
-bool in_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
-  const double s0 = cross(b - a, p - a), s1 = cross(c - b, p - b), s2 = cross(a - c, p - c);
-  return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
-}
-
-// The distance from p to the convex hull of q0..q3 (0 inside). In the plane every point of the
-// hull lies in a triangle of three of the points, and the hull's edges are among the six
-// segments between them, the others lying inside it.
-double distance_to_hull(const Vec2& p, const Vec2& q0, const Vec2& q1, const Vec2& q2, const Vec2& q3) {
-  if (in_triangle(p, q0, q1, q2) || in_triangle(p, q0, q1, q3) || in_triangle(p, q0, q2, q3) || in_triangle(p, q1, q2, q3))
-    return 0.0;
-  return std::min({point_segment_distance_value(p, q0, q1), point_segment_distance_value(p, q0, q2),
-                   point_segment_distance_value(p, q0, q3), point_segment_distance_value(p, q1, q2),
-                   point_segment_distance_value(p, q1, q3), point_segment_distance_value(p, q2, q3)});
-}
-
-}  // namespace
-
 double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx, double safety,
                                           ContactNeighbours& c) const {
   const int nodes = static_cast<int>(x.size() / 2);
@@ -224,7 +202,7 @@ double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen:
       if (move <= safety * gap) continue;
       // The edge sweeps a region inside the hull of its two positions: a corner that stays far
       // enough from that hull keeps its gap whatever the move's length.
-      const double swept = distance_to_hull(corner.a, a, b, a_end, b_end) - 0.5 * corner.thickness - rod_radius_;
+      const double swept = point_hull_distance(corner.a, a, b, a_end, b_end) - 0.5 * corner.thickness - rod_radius_;
       if (swept < (1.0 - safety) * gap) alpha = std::min(alpha, safety * gap * alpha / move);
     }
   }

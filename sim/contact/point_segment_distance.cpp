@@ -40,8 +40,26 @@ double point_segment_distance_value(const Vec2& p, const Vec2& a, const Vec2& b)
 }
 
 namespace {
+
 double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
+
+bool in_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
+  const double s0 = cross(b - a, p - a), s1 = cross(c - b, p - b), s2 = cross(a - c, p - c);
+  return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+}
+
 }  // namespace
+
+// In the plane every point of the hull lies in a triangle of three of the points
+// (Caratheodory), and the hull's edges are among the six segments between them, the others
+// lying inside it, so outside the hull the nearest of the six is the distance.
+double point_hull_distance(const Vec2& p, const Vec2& q0, const Vec2& q1, const Vec2& q2, const Vec2& q3) {
+  if (in_triangle(p, q0, q1, q2) || in_triangle(p, q0, q1, q3) || in_triangle(p, q0, q2, q3) || in_triangle(p, q1, q2, q3))
+    return 0.0;
+  return std::min({point_segment_distance_value(p, q0, q1), point_segment_distance_value(p, q0, q2),
+                   point_segment_distance_value(p, q0, q3), point_segment_distance_value(p, q1, q2),
+                   point_segment_distance_value(p, q1, q3), point_segment_distance_value(p, q2, q3)});
+}
 
 double segment_segment_distance(const Vec2& p0, const Vec2& p1, const Vec2& a, const Vec2& b) {
   // Two segments in the plane that do not cross are closest at an end of one of them.

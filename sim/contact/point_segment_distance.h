@@ -34,4 +34,10 @@ double point_segment_distance_value(const Eigen::Vector2d& p, const Eigen::Vecto
 double segment_segment_distance(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& a,
                                 const Eigen::Vector2d& b);
 
+// The distance from p to the convex hull of q0..q3 (0 inside it). A segment whose ends move in
+// straight lines from (q0, q1) to (q2, q3) stays inside that hull, so the step cap bounds from it
+// how close a moving rod edge comes to a wall corner.
+double point_hull_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& q0, const Eigen::Vector2d& q1,
+                           const Eigen::Vector2d& q2, const Eigen::Vector2d& q3);
+
 }  // namespace vascsim
