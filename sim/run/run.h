@@ -121,7 +121,11 @@ class Run {
   bool frames_interpolable(const State& start, const Controls& controls, std::size_t frame) const;
   NewtonStopTolerance newton_stop() const;
   bool solve_equilibrium(FrameSink& sink);
+  // Writes a frame: state_ itself or a state inside the last step (error control).
   void record(FrameSink& sink, const State& frame);
+  // The logged force channels, concatenated, at a solved state (state_ or step_start_), with the
+  // controls of the step that ended there; the newest two are kept.
+  Eigen::VectorXd solved_forces(const State& at, const Controls& controls);
   void update_statistics(double dt, const Controls& controls);
   double feed_force() const;  // N, control.advance
   // The force of every module writing channel `name`, at the committed state.
@@ -140,6 +144,12 @@ class Run {
   std::vector<double> breakpoints_;                  // s, error control: where the reference's velocity or acceleration jumps
   State state_;
   State step_start_;                                 // error control: where the last step started, for frames inside it
+  Controls step_start_controls_;                     // error control: the controls of the step that ended at step_start_
+  struct SolvedForces {
+    double t = 0.0;          // s
+    Eigen::VectorXd values;  // solved_forces() at t; empty: none yet
+  };
+  SolvedForces solved_forces_[2];
   Workspace workspace_;
   std::vector<LogChannel> channels_;
   std::vector<std::string> force_channels_;          // distinct module channels, in log order
