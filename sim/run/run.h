@@ -128,7 +128,7 @@ class Run {
   Eigen::VectorXd solved_forces(const State& at, const Controls& controls);
   void update_statistics(double dt, const Controls& controls);
   double feed_force() const;  // N, control.advance
-  // The force of every module writing channel `name`, at the committed state.
+  // The force of every module writing channel `name` at a solved state `at` (state_ or step_start_).
   Eigen::VectorXd channel_force(const std::string& name, const Controls& controls, const State& at) const;
   // What the log and the statistics report for channel `name`: the modules' force, with the
   // actuation's own estimate for the magnetic force where it has no module.
