@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 #include <tuple>
 
@@ -57,7 +59,7 @@ TEST(WallContact, ForceIsMinusEnergyGradientForNodesAndCorners) {
 
 // Neighbour lists kept between calls must never hide a pair: a rod wandering through a
 // thick-walled maze, in small and large moves, sees exactly the pairs and the step cap that
-// fresh (empty) lists find at every position.
+// fresh (empty) lists find at every position, and the smallest gap among them.
 TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
   std::vector<WallSegment> walls = {{Vec2(0, 0), Vec2(0.2, 0), 0.02}, {Vec2(0.2, 0), Vec2(0.2, 0.2), 0.02},
                                     {Vec2(0.1, 0.05), Vec2(0.1, 0.15), 0.02}, {Vec2(0, 0.2), Vec2(0.2, 0.2), 0.0}};
@@ -91,6 +93,13 @@ TEST(WallContact, ReusedNeighbourListsFindTheSamePairsAsAFreshSearch) {
     std::sort(got.begin(), got.end());
     std::sort(want.begin(), want.end());
     ASSERT_EQ(got, want) << "trial " << trial;
+    // The distance-only smallest gap (frame checks, statistics) is the smallest visited pair's.
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const auto& pair : want) smallest = std::min(smallest, std::get<2>(pair));
+    if (std::isinf(smallest))
+      ASSERT_EQ(geometry.min_pair_gap(x, reused), smallest) << "trial " << trial;
+    else
+      ASSERT_NEAR(geometry.min_pair_gap(x, reused), smallest, 1e-15) << "trial " << trial;
     // The step cap reads the same lists for small moves and the grids for large ones.
     Eigen::VectorXd dx(2 * nodes);
     // m, per coordinate: beyond and up to the lists' margin for a move, reach + skin/2 = 4 mm

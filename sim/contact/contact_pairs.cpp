@@ -136,6 +136,28 @@ double ContactGeometry::min_gap(const Eigen::VectorXd& x, double search) const {
   return gap;
 }
 
+double ContactGeometry::min_pair_gap(const Eigen::VectorXd& x, ContactNeighbours& c) const {
+  refresh_neighbours(x, c);
+  double gap = std::numeric_limits<double>::infinity();
+  const int nodes = static_cast<int>(x.size() / 2);
+  for (int i = 0; i < nodes; ++i) {
+    const Vec2 p = x.segment<2>(2 * i);
+    for (int k = c.node_begin[static_cast<std::size_t>(i)]; k < c.node_begin[static_cast<std::size_t>(i) + 1]; ++k) {
+      const WallSegment& w = walls_[static_cast<std::size_t>(c.node_walls[static_cast<std::size_t>(k)])];
+      gap = std::min(gap, point_segment_distance_value(p, w.a, w.b) - 0.5 * w.thickness - rod_radius_);
+    }
+  }
+  for (int i = 0; i + 1 < nodes; ++i) {
+    const Vec2 a = x.segment<2>(2 * i), b = x.segment<2>(2 * i + 2);
+    for (int k = c.edge_begin[static_cast<std::size_t>(i)]; k < c.edge_begin[static_cast<std::size_t>(i) + 1]; ++k) {
+      const WallSegment& corner = corners_[static_cast<std::size_t>(c.edge_corners[static_cast<std::size_t>(k)])];
+      gap = std::min(gap, point_segment_distance_value(corner.a, a, b) - 0.5 * corner.thickness - rod_radius_);
+    }
+  }
+  // The lists hold every pair within reach and some beyond it.
+  return gap < reach_ ? gap : std::numeric_limits<double>::infinity();
+}
+
 double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx, double safety,
                                           ContactNeighbours& c) const {
   const int nodes = static_cast<int>(x.size() / 2);

@@ -51,6 +51,9 @@ class ContactGeometry {
                      ContactNeighbours& neighbours, bool nodes_only = false) const;
   // The smallest gap of any node or edge against any wall within `search` (m) of it, or +inf.
   double min_gap(const Eigen::VectorXd& x, double search) const;
+  // The smallest gap of the pairs for_each_pair would visit (gap < reach), or +inf: distances
+  // only, for the checks that need no force (a frame's gaps, the run's statistics).
+  double min_pair_gap(const Eigen::VectorXd& x, ContactNeighbours& neighbours) const;
   // Largest fraction of the move x -> x + dx that keeps every gap positive, shrunk by `safety`
   // (conservative: a distance changes no faster than the points that define it move).
   double max_step_fraction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx, double safety,

@@ -85,10 +85,7 @@ double WallContactModule::max_step_fraction(const ForceContext& ctx, const Eigen
 
 bool WallContactModule::defined_at(const ForceContext& ctx) const {
   ContactNeighbours scratch;
-  bool open = true;
-  geometry_->for_each_pair(*ctx.x, false, [&](const ContactPair& pair) { open = open && pair.gap > 0.0; },
-                           run_neighbours(ctx, *geometry_, scratch));
-  return open;
+  return geometry_->min_pair_gap(*ctx.x, run_neighbours(ctx, *geometry_, scratch)) > 0.0;
 }
 
 WallFrictionModule::WallFrictionModule(std::shared_ptr<const ContactGeometry> geometry, const ContactParams& params)

@@ -144,7 +144,9 @@ bool Run::advance(double dt) {
 // the state goes back and a shorter step is tried. `dt` is the step the controller proposed
 // (already cut to the next breakpoint); returns the step it proposes next, 0 on failure.
 double Run::advance_controlled(double dt, std::size_t next_frame) {
-  State before = state_;
+  // Copied into a member that keeps its storage: a State is six vectors, copied at every step.
+  State& before = attempt_start_;
+  before = state_;
   const std::vector<NodeForce> wall_forces_before = wall_forces_;
   double h = dt;
   for (;;) {
@@ -179,7 +181,7 @@ double Run::advance_controlled(double dt, std::size_t next_frame) {
       step_budget_->spend(report.dt);
       error_weights_.speed = std::max(error_weights_.speed, state_.v.lpNorm<Eigen::Infinity>());
       if (err <= 1.0) stats_.error_max = std::max(stats_.error_max, err);
-      step_start_ = std::move(before);
+      std::swap(step_start_, attempt_start_);
       // The floor after this step: it may have spent the last credit, or earned some.
       return err < 0 ? report.dt : step_size_->accepted(report.dt, err, order, shortest_step());
     }
@@ -262,7 +264,7 @@ void Run::update_statistics(double dt, const Controls& controls) {
   error_square_time_ += error * error * dt;
   stats_.tip_error_rms = std::sqrt(error_square_time_ / std::max(state_.t, 1e-300));
   // The magnetic force as applied at the end of the step (the servo is implicit).
-  const Vec2 actuation = logged_force(channel::kActuationForce, controls, state_).reshaped(2, n).rowwise().sum();
+  const Vec2 actuation = solved_force(channel::kActuationForce, state_, controls).reshaped(2, n).rowwise().sum();
   stats_.actuation_force_max = std::max(stats_.actuation_force_max, actuation.norm());
   actuation_time_ += actuation.norm() * dt;
   stats_.actuation_force_mean = actuation_time_ / std::max(state_.t, 1e-300);
@@ -272,14 +274,13 @@ void Run::update_statistics(double dt, const Controls& controls) {
   }
   // Contact: gaps, time in contact and the largest per-node wall force.
   // Gaps beyond the barrier's reach are not contact: only pairs within it are visited.
-  double gap = std::numeric_limits<double>::infinity();
-  navigation_->contact_geometry->for_each_pair(
-      state_.x, false, [&](const ContactPair& pair) { gap = std::min(gap, pair.gap); },
-      workspace_.shared->of<ContactNeighboursCache>(navigation_->contact_geometry.get()).lists);
+  const double gap = navigation_->contact_geometry->min_pair_gap(
+      state_.x, workspace_.shared->of<ContactNeighboursCache>(navigation_->contact_geometry.get()).lists);
   stats_.min_gap = std::min(stats_.min_gap, gap);
   stats_.max_penetration = std::max(stats_.max_penetration, -stats_.min_gap);
   if (!std::isfinite(gap) && !navigation_->paper_walls) return;  // touching nothing: no wall force
-  const Eigen::VectorXd wall = channel_force(channel::kContactForce, controls, state_);
+  if (!contains(force_channels_, channel::kContactForce)) return;
+  const Eigen::VectorXd& wall = solved_force(channel::kContactForce, state_, controls);
   for (int i = 0; i < n; ++i) {
     const double magnitude = wall.segment<2>(2 * i).norm();
     stats_.contact_force_max = std::max(stats_.contact_force_max, magnitude);
@@ -287,16 +288,20 @@ void Run::update_statistics(double dt, const Controls& controls) {
   }
 }
 
-Eigen::VectorXd Run::solved_forces(const State& at, const Controls& controls) {
-  for (const SolvedForces& cached : solved_forces_)
-    if (cached.t == at.t && cached.values.size() > 0) return cached.values;
-  Eigen::VectorXd values(static_cast<Eigen::Index>(force_channels_.size()) * model_->dofs());
-  for (std::size_t c = 0; c < force_channels_.size(); ++c)
-    values.segment(static_cast<Eigen::Index>(c) * model_->dofs(), model_->dofs()) = logged_force(force_channels_[c], controls, at);
-  // Keep the newest two: the end of one step is the start of the next.
-  solved_forces_[0] = std::move(solved_forces_[1]);
-  solved_forces_[1] = {at.t, values};
-  return values;
+const Eigen::VectorXd& Run::solved_force(const std::string& name, const State& at, const Controls& controls) {
+  SolvedForces* entry = nullptr;
+  for (SolvedForces& cached : solved_forces_)
+    if (cached.t == at.t && !cached.channels.empty()) entry = &cached;
+  if (!entry) {
+    // Keep the newest two: the end of one step is the start of the next.
+    solved_forces_[0] = std::move(solved_forces_[1]);
+    solved_forces_[1] = {at.t, std::vector<Eigen::VectorXd>(force_channels_.size())};
+    entry = &solved_forces_[1];
+  }
+  const std::size_t c = static_cast<std::size_t>(std::find(force_channels_.begin(), force_channels_.end(), name) - force_channels_.begin());
+  Eigen::VectorXd& force = entry->channels.at(c);
+  if (force.size() == 0) force = logged_force(name, controls, at);
+  return force;
 }
 
 void Run::record(FrameSink& sink, const State& frame) {
@@ -304,20 +309,22 @@ void Run::record(FrameSink& sink, const State& frame) {
   // they were solved, not evaluated at the interpolated positions: a barrier's force is so steep
   // in the gap that the interpolant's small position error made spikes (74 mN on maze_default
   // at balanced, where no solved state exceeds 19 mN).
-  Eigen::VectorXd forces;
-  if (frame.t == state_.t) {
-    forces = solved_forces(state_, last_controls_);
-  } else {
-    const double s = (frame.t - step_start_.t) / (state_.t - step_start_.t);
-    // Start first, then end: the end stays cached for the next step's start.
-    const Eigen::VectorXd start = solved_forces(step_start_, step_start_controls_);
-    forces = (1.0 - s) * start + s * solved_forces(state_, last_controls_);
-  }
   std::vector<double> values;
   values.reserve(channels_.size() * frame.x.size());
   values.insert(values.end(), frame.x.data(), frame.x.data() + frame.x.size());
   values.insert(values.end(), frame.v.data(), frame.v.data() + frame.v.size());
-  values.insert(values.end(), forces.data(), forces.data() + forces.size());
+  for (const std::string& name : force_channels_) {
+    if (frame.t == state_.t) {
+      const Eigen::VectorXd& force = solved_force(name, state_, last_controls_);
+      values.insert(values.end(), force.data(), force.data() + force.size());
+    } else {
+      // Start first, then end: the end stays cached for the next step's start.
+      const double s = (frame.t - step_start_.t) / (state_.t - step_start_.t);
+      const Eigen::VectorXd start = solved_force(name, step_start_, step_start_controls_);
+      const Eigen::VectorXd force = (1.0 - s) * start + s * solved_force(name, state_, last_controls_);
+      values.insert(values.end(), force.data(), force.data() + force.size());
+    }
+  }
   if (navigation_) {
     const Vec2 reference = navigation_->trajectory->position(controller_->reference_time(frame.t));
     values.push_back(reference.x());

@@ -123,9 +123,10 @@ class Run {
   bool solve_equilibrium(FrameSink& sink);
   // Writes a frame: state_ itself or a state inside the last step (error control).
   void record(FrameSink& sink, const State& frame);
-  // The logged force channels, concatenated, at a solved state (state_ or step_start_), with the
-  // controls of the step that ended there; the newest two are kept.
-  Eigen::VectorXd solved_forces(const State& at, const Controls& controls);
+  // Force channel `name` (one of force_channels_) at a solved state (state_ or step_start_), with
+  // the controls of the step that ended there. Cached for the newest two states, so that the
+  // statistics and the frames evaluate each channel once per step end.
+  const Eigen::VectorXd& solved_force(const std::string& name, const State& at, const Controls& controls);
   void update_statistics(double dt, const Controls& controls);
   double feed_force() const;  // N, control.advance
   // The force of every module writing channel `name` at a solved state `at` (state_ or step_start_).
@@ -145,9 +146,10 @@ class Run {
   State state_;
   State step_start_;                                 // error control: where the last step started, for frames inside it
   Controls step_start_controls_;                     // error control: the controls of the step that ended at step_start_
+  State attempt_start_;                              // error control: where the step being tried started
   struct SolvedForces {
-    double t = 0.0;          // s
-    Eigen::VectorXd values;  // solved_forces() at t; empty: none yet
+    double t = 0.0;                         // s
+    std::vector<Eigen::VectorXd> channels;  // by force_channels_ index, empty until evaluated; none: unused entry
   };
   SolvedForces solved_forces_[2];
   Workspace workspace_;
