@@ -34,6 +34,10 @@ struct ContactNeighbours {
   Eigen::VectorXd anchor;                     // m, positions the lists were built for
   std::vector<int> node_begin, node_walls;    // CSR: walls near node i
   std::vector<int> edge_begin, edge_corners;  // CSR: corners near edge i
+  // m, at the anchor: the smallest gap of node i to its listed walls and of edge i to its listed
+  // corners (+inf if none). A node (or an edge's end) that has moved d from the anchor has no gap
+  // below clearance - d, which lets the step cap pass over the nodes far from every wall.
+  std::vector<double> node_clearance, edge_clearance;
 };
 
 // The walls and their corners, with grids for distance queries: immutable after construction,
