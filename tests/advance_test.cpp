@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "sim/io/scene_reader.h"
@@ -74,6 +76,60 @@ TEST(Advance, InAStraightVesselTheRodSlidesAsOneAndTheDrivePushesAgainstItsAxial
   EXPECT_NEAR(last[tip_x + 1], first[tip_x + 1], 1e-9) << "and stays on the axis";
   EXPECT_GT(run.statistics().feed_force_max, 0.99 * expected);
   EXPECT_LT(run.statistics().feed_force_mean, run.statistics().feed_force_max);
+}
+
+// The feed force of a frame inside a step is interpolated between the step's solved ends, as the
+// force channels are, not held at the step's end: a held value makes a staircase that jumps
+// at every step's end. Seen from the frames alone: the line through a step's frames, carried to
+// the step's end, meets the line through the next step's frames there.
+TEST(Advance, FeedForceIsContinuousAcrossStepEnds) {
+  std::string text = kStraightVessel;
+  const std::string run_section = R"("run": {"duration": 3, "output_interval": 0.1})";
+  text.replace(text.find(run_section), run_section.size(),
+               R"("run": {"duration": 1.5, "output_interval": 0.0005}, "solver": {"preset": "balanced"})");
+  const Scene scene = read_scene_text(text, "advance.json");
+  vascsim::Run run(compile(scene));
+  std::size_t feed_offset = 0;
+  for (const auto& c : run.channels()) {
+    if (c.name == "feed/force") break;
+    feed_offset += c.count;
+  }
+  // Frames grouped by the step they fall in (the run's step count and end time when written).
+  struct Step {
+    int index = 0;
+    double end = 0.0;                               // s
+    std::vector<std::pair<double, double>> frames;  // (t, feed force)
+  };
+  struct BySteps : FrameSink {
+    const vascsim::Run* run = nullptr;
+    std::size_t offset = 0;
+    std::vector<Step> steps;
+    void write(double t, const std::vector<double>& v) override {
+      const RunStatistics& s = run->statistics();
+      if (steps.empty() || steps.back().index != s.steps) steps.push_back({s.steps, s.simulated_time, {}});
+      steps.back().frames.emplace_back(t, v.at(offset));
+    }
+  } sink;
+  sink.run = &run;
+  sink.offset = feed_offset;
+  ASSERT_TRUE(run.run(sink)) << run.statistics().failure;
+  const auto line_at = [](const Step& s, double t) {
+    const auto& [t0, f0] = s.frames.front();
+    const auto& [t1, f1] = s.frames.back();
+    return f0 + (f1 - f0) * (t - t0) / (t1 - t0);
+  };
+  double peak = 0.0;
+  for (const Step& s : sink.steps)
+    for (const auto& frame : s.frames) peak = std::max(peak, std::abs(frame.second));
+  int compared = 0;
+  for (std::size_t k = 1; k + 1 < sink.steps.size(); ++k) {
+    const Step& step = sink.steps[k];
+    const Step& next = sink.steps[k + 1];
+    if (next.index != step.index + 1 || step.frames.size() < 2 || next.frames.size() < 2) continue;
+    EXPECT_NEAR(line_at(step, step.end), line_at(next, step.end), 1e-7 * peak) << "at the step ending at t = " << step.end;
+    ++compared;
+  }
+  EXPECT_GT(compared, 100) << "steps several frames long, back to back";
 }
 
 TEST(Advance, ProfilesAndErrors) {

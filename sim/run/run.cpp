@@ -253,6 +253,8 @@ void Run::update_statistics(double dt, const Controls& controls) {
   if (!navigation_) return;
   if (scene_.control.advance.enabled()) {
     const double f = feed_force();
+    feed_force_at_step_start_ = feed_force_at_step_end_;
+    feed_force_at_step_end_ = f;
     stats_.feed_force_max = std::max(stats_.feed_force_max, std::abs(f));
     feed_impulse_ += std::abs(f) * dt;
     stats_.feed_force_mean = feed_impulse_ / std::max(state_.t, 1e-300);
@@ -313,13 +315,14 @@ void Run::record(FrameSink& sink, const State& frame) {
   values.reserve(channels_.size() * frame.x.size());
   values.insert(values.end(), frame.x.data(), frame.x.data() + frame.x.size());
   values.insert(values.end(), frame.v.data(), frame.v.data() + frame.v.size());
+  const bool at_step_end = frame.t == state_.t;
+  const double s = at_step_end ? 1.0 : (frame.t - step_start_.t) / (state_.t - step_start_.t);  // share of the step
   for (const std::string& name : force_channels_) {
-    if (frame.t == state_.t) {
+    if (at_step_end) {
       const Eigen::VectorXd& force = solved_force(name, state_, last_controls_);
       values.insert(values.end(), force.data(), force.data() + force.size());
     } else {
       // Start first, then end: the end stays cached for the next step's start.
-      const double s = (frame.t - step_start_.t) / (state_.t - step_start_.t);
       const Eigen::VectorXd start = solved_force(name, step_start_, step_start_controls_);
       const Eigen::VectorXd force = (1.0 - s) * start + s * solved_force(name, state_, last_controls_);
       values.insert(values.end(), force.data(), force.data() + force.size());
@@ -331,8 +334,8 @@ void Run::record(FrameSink& sink, const State& frame) {
     values.push_back(reference.y());
     values.push_back((reference - frame.position(model_->nodes() - 1)).norm());
     if (scene_.control.advance.enabled()) {
-      // The drive's reaction is the last solve's: within a step the frame holds it.
-      values.push_back(feed_force());
+      // The drive's reaction, solved at the step's ends, interpolated in between like the forces.
+      values.push_back((1.0 - s) * feed_force_at_step_start_ + s * feed_force_at_step_end_);
       values.push_back(scene_.control.advance.fed_length(frame.t) - scene_.control.advance.fed_length(0.0));
     }
   }

@@ -162,6 +162,8 @@ class Run {
   double error_square_time_ = 0.0;                   // m^2 s
   double actuation_time_ = 0.0;                      // N s
   double feed_impulse_ = 0.0;                        // N s
+  double feed_force_at_step_start_ = 0.0;            // N, feed_force() solved at step_start_ (0 before any step)
+  double feed_force_at_step_end_ = 0.0;              // N, and at state_
 };
 
 }  // namespace vascsim
