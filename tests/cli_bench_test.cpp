@@ -35,6 +35,20 @@ TEST(CliBench, AccuracyRefusesBadOutputsAndMissingScenesUpFront) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find(dir + "/no_scenes/maze_body_drag.json"), std::string::npos) << r.output;
   EXPECT_TRUE(fs::is_empty(dir)) << "something was written";
+  // --seeds needs a generated maze in maze_body_drag.json: a vessel network has no seed.
+  fs::create_directories(dir + "/vessels");
+  fs::copy_file(source_path("scenes/vessel_tree.json"), dir + "/vessels/maze_body_drag.json");
+  fs::copy_file(source_path("scenes/maze_default.json"), dir + "/vessels/maze_default.json");
+  r = run_vascsim("bench accuracy --seeds 3 --scenes " + dir + "/vessels --csv " + dir + "/accuracy.csv --traversal-csv " +
+                  dir + "/traversal.csv");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--seeds: " + dir + "/vessels/maze_body_drag.json has no generated maze"), std::string::npos)
+      << r.output;
+  r = run_vascsim("bench accuracy --seeds 0 --quick --csv " + dir + "/accuracy.csv");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--seeds"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/accuracy.csv"));
+  EXPECT_FALSE(fs::exists(dir + "/traversal.csv"));
   fs::remove_all(dir);
 }
 

@@ -191,6 +191,7 @@ int run_bench_accuracy(int argc, char** argv) {
       {"duration", "T", "simulated time of the dynamic problem, s (default 10: one period of mode 1)"},
       {"quick", "", "a small sweep (for tests): no traversals"},
       {"scenes", "DIR", "where maze_body_drag.json and maze_default.json are (default scenes)"},
+      {"seeds", "K", "also run maze_body_drag on the next K - 1 maze seeds and compare the settings on the mean over the K mazes (default 1)"},
       {"traversal-csv", "FILE", "write the traversal rows as CSV (default traversal.csv)"},
       {"help", "", "this text"},
   };
@@ -204,11 +205,16 @@ int run_bench_accuracy(int argc, char** argv) {
   const bool quick = args.flag("quick");
   const std::string scenes = args.value("scenes").value_or("scenes");
   const std::string traversal_csv = args.value("traversal-csv").value_or("traversal.csv");
+  const int seeds = static_cast<int>(args.integer("seeds", 1, 1, 100));
   // The outputs are checked before minutes of runs, and written whole when they are done.
   check_replaceable_output(csv, true, {});
   if (!quick) {
     check_replaceable_output(traversal_csv, true, {});
     for (const char* name : {"maze_body_drag", "maze_default"}) read_scene_file(scenes + "/" + name + ".json");
+    const std::string damped = scenes + "/maze_body_drag.json";
+    const Scene scene = read_scene_file(damped);
+    if (seeds > 1 && (scene.environment != EnvironmentKind::kMaze || scene.maze.explicit_walls))
+      throw InputError("--seeds: " + damped + " has no generated maze whose seed could change");
   }
 
   std::vector<Row> rows;
@@ -300,19 +306,39 @@ int run_bench_accuracy(int argc, char** argv) {
   // The maze traversals (bench_accuracy_traversal.h): 26 runs, about a minute.
   std::string traversal_table =
       "scene,stepping,mean_dt,steps,newton_per_step,wall_time,real_time,body_deviation_m,goal_time,tip_rms_m,"
-      "tip_max_m,contact_force_max_N,steps_over_tolerance,ok\n";
+      "tip_max_m,contact_force_max_N,steps_over_tolerance,ok,maze_seed\n";
+  const auto add_to_table = [&](const std::vector<TraversalRow>& traversal, std::uint64_t seed) {
+    for (const auto& r : traversal) {
+      std::snprintf(line, sizeof line, "%s,%s,%.6g,%d,%.4g,%.6e,%.6g,%.6e,%.6f,%.6e,%.6e,%.6e,%d,%d,%llu\n", r.scene.c_str(),
+                    r.stepping.c_str(), r.mean_dt, r.steps, r.newton_per_step, r.wall_time, r.real_time, r.body_deviation,
+                    r.goal_time, r.tip_rms, r.tip_max, r.contact_force_max, r.steps_over_tolerance, r.ok ? 1 : 0,
+                    static_cast<unsigned long long>(seed));
+      traversal_table += line;
+    }
+  };
   for (const char* name : {"maze_body_drag", "maze_default"}) {
     std::printf("\nTraversal of %s/%s.json (48 s; body deviation against the reference run):\n", scenes.c_str(), name);
     print_traversal_header();
-    const std::vector<TraversalRow> traversal =
-        traversal_rows(read_scene_file(scenes + "/" + name + ".json"), [](const TraversalRow& r) { print_traversal_row(r); });
-    print_traversal_comparison(traversal);
-    for (const auto& r : traversal) {
-      std::snprintf(line, sizeof line, "%s,%s,%.6g,%d,%.4g,%.6e,%.6g,%.6e,%.6f,%.6e,%.6e,%.6e,%d,%d\n", r.scene.c_str(),
-                    r.stepping.c_str(), r.mean_dt, r.steps, r.newton_per_step, r.wall_time, r.real_time, r.body_deviation,
-                    r.goal_time, r.tip_rms, r.tip_max, r.contact_force_max, r.steps_over_tolerance, r.ok ? 1 : 0);
-      traversal_table += line;
+    Scene scene = read_scene_file(scenes + "/" + name + ".json");
+    std::vector<std::vector<TraversalRow>> by_maze = {traversal_rows(scene, [](const TraversalRow& r) { print_traversal_row(r); })};
+    print_traversal_comparison(by_maze[0]);
+    add_to_table(by_maze[0], scene.maze.seed);
+    if (seeds == 1 || std::string(name) != "maze_body_drag") continue;
+    // The same settings on more mazes, each against a reference of its own.
+    const std::uint64_t first_seed = scene.maze.seed;
+    for (int k = 1; k < seeds; ++k) {
+      scene.maze.seed = first_seed + static_cast<std::uint64_t>(k);
+      std::printf("\n%s on maze seed %llu:\n", name, static_cast<unsigned long long>(scene.maze.seed));
+      print_traversal_header();
+      by_maze.push_back(traversal_rows(scene, [](const TraversalRow& r) { print_traversal_row(r); }));
+      add_to_table(by_maze.back(), scene.maze.seed);
     }
+    std::printf("\n%s over maze seeds %llu..%llu (body deviation: the mean of each maze's largest; wall time: the sum):\n",
+                name, static_cast<unsigned long long>(first_seed), static_cast<unsigned long long>(scene.maze.seed));
+    print_traversal_header();
+    const std::vector<TraversalRow> mean = mean_over_mazes(by_maze);
+    for (const auto& r : mean) print_traversal_row(r);
+    print_traversal_comparison(mean);
   }
   write_file_atomically(traversal_csv, traversal_table);
   std::printf("\nwrote %s\n", traversal_csv.c_str());

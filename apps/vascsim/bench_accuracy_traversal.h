@@ -35,6 +35,12 @@ struct TraversalRow {
 // reference runs first, so `progress` is called with each row as soon as it has run.
 std::vector<TraversalRow> traversal_rows(const Scene& scene, const std::function<void(const TraversalRow&)>& progress);
 
+// The mean over several mazes of each setting's rows (rows_by_maze[k]: traversal_rows of maze k,
+// in the same order): body deviation, steps, Newton iterations per step, tip error and goal time
+// averaged, wall time summed over the mazes. One maze's worst deviation swings by 2-3x with any
+// change to the steps; their mean ranks settings (docs/accuracy.md, "Presets").
+std::vector<TraversalRow> mean_over_mazes(const std::vector<std::vector<TraversalRow>>& rows_by_maze);
+
 void print_traversal_header();
 void print_traversal_row(const TraversalRow& r);
 // The Pareto front (body deviation against wall time) and, for every error-controlled run, the
