@@ -44,7 +44,8 @@ std::vector<TraversalRow> mean_over_mazes(const std::vector<std::vector<Traversa
 void print_traversal_header();
 void print_traversal_row(const TraversalRow& r);
 // The Pareto front (body deviation against wall time) and, for every error-controlled run, the
-// fastest fixed step with equal or smaller deviation.
+// fastest fixed step with equal or smaller deviation and the wall time of a fixed step of equal
+// deviation, interpolated along the fixed steps' front.
 void print_traversal_comparison(const std::vector<TraversalRow>& rows);
 
 }  // namespace vascsim::cli
