@@ -41,22 +41,19 @@ LocalError local_error(const State& before, const State& after, int order, const
     // Backward Euler e = h^2 y''/2, the linear predictor's -h (h + h1) y''/2.
     share = h / (2 * h + h1);
   }
-  // One pass over the state (it runs at every step): the largest deviations first, scaled once.
-  const Eigen::Index n = after.x.size();
-  const bool quadratic_predictor = p.c2 != 0;
-  double speed = weights.speed, deviation_x = 0.0, deviation_v = 0.0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    speed = std::max(speed, std::max(std::abs(before.v[i]), std::abs(after.v[i])));
-    if (fixed[static_cast<std::size_t>(i)]) continue;
-    double x = p.c0 * before.x[i] + p.c1 * before.x_prev[i];
-    double v = p.c0 * before.v[i] + p.c1 * before.v_prev[i];
-    if (quadratic_predictor) {
-      x += p.c2 * before.x_prev2[i];
-      v += p.c2 * before.v_prev2[i];
-    }
-    deviation_x = std::max(deviation_x, std::abs(after.x[i] - x));
-    deviation_v = std::max(deviation_v, std::abs(after.v[i] - v));
+  // Whole-vector expressions, which Eigen vectorises (this runs at every step: a scalar loop with
+  // a branch per degree of freedom cost 3 % of a run); prescribed ones are zeroed before the max.
+  Eigen::ArrayXd deviation_x, deviation_v;
+  if (p.c2 != 0) {
+    deviation_x = (after.x - (p.c0 * before.x + p.c1 * before.x_prev + p.c2 * before.x_prev2)).array().abs();
+    deviation_v = (after.v - (p.c0 * before.v + p.c1 * before.v_prev + p.c2 * before.v_prev2)).array().abs();
+  } else {
+    deviation_x = (after.x - (p.c0 * before.x + p.c1 * before.x_prev)).array().abs();
+    deviation_v = (after.v - (p.c0 * before.v + p.c1 * before.v_prev)).array().abs();
   }
+  for (std::size_t i = 0; i < fixed.size(); ++i)
+    if (fixed[i]) deviation_x[static_cast<Eigen::Index>(i)] = deviation_v[static_cast<Eigen::Index>(i)] = 0.0;
+  const double speed = std::max({weights.speed, before.v.lpNorm<Eigen::Infinity>(), after.v.lpNorm<Eigen::Infinity>()});
   const double scale_x = weights.atol_position + weights.rtol * weights.length;
   // Velocities come from difference quotients, v = (x - x_hat) / (beta h), whose round-off grows
   // as the step shrinks: no estimate can be asked to go below it (and chasing it would shrink the
@@ -65,8 +62,8 @@ LocalError local_error(const State& before, const State& after, int order, const
   const double scale_v = weights.atol_velocity + weights.rtol * speed + round_off_v;
   LocalError worst;
   // A zero scale (rtol and that quantity's atol both 0) leaves the quantity uncontrolled.
-  if (scale_x > 0) worst.position = share * deviation_x / scale_x;
-  if (scale_v > 0) worst.velocity = share * deviation_v / scale_v;
+  if (scale_x > 0) worst.position = share * deviation_x.maxCoeff() / scale_x;
+  if (scale_v > 0) worst.velocity = share * deviation_v.maxCoeff() / scale_v;
   return worst;
 }
 
