@@ -41,8 +41,9 @@ LocalError local_error(const State& before, const State& after, int order, const
     // Backward Euler e = h^2 y''/2, the linear predictor's -h (h + h1) y''/2.
     share = h / (2 * h + h1);
   }
-  // Whole-vector expressions, which Eigen vectorises (this runs at every step: a scalar loop with
-  // a branch per degree of freedom cost 3 % of a run); prescribed ones are zeroed before the max.
+  // Whole-vector expressions, which Eigen vectorises (this runs at every step; the scalar loop with
+  // a branch per degree of freedom it replaces took 16 M instructions of maze_body_drag's 530 M at
+  // fast, this 11 M); prescribed degrees of freedom are zeroed before the max.
   Eigen::ArrayXd deviation_x, deviation_v;
   if (p.c2 != 0) {
     deviation_x = (after.x - (p.c0 * before.x + p.c1 * before.x_prev + p.c2 * before.x_prev2)).array().abs();
