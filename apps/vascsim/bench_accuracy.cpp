@@ -18,6 +18,7 @@
 #include "apps/vascsim/bench_accuracy_traversal.h"
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
+#include "apps/vascsim/equal_error_cost.h"
 #include "sim/io/output_file.h"
 #include "sim/io/scene_reader.h"
 #include "sim/run/compile.h"
@@ -276,8 +277,8 @@ int run_bench_accuracy(int argc, char** argv) {
   // Error control against fixed steps: for each error-controlled run, the fastest fixed-step run
   // (same N) that is at least as accurate, and how much longer it takes.
   std::printf("\nError control against the best fixed step of equal or smaller error (same N):\n");
-  std::printf("%-28s %6s %11s %11s   %-28s %11s %8s\n", "controlled", "N", "error", "wall [s]", "best fixed (scheme, dt)",
-              "wall [s]", "speedup");
+  std::printf("%-28s %6s %11s %11s   %-28s %11s %8s %15s\n", "controlled", "N", "error", "wall [s]", "best fixed (scheme, dt)",
+              "wall [s]", "speedup", "at equal error");
   for (const auto& a : dynamic) {
     if (a.scheme.find("/err") == std::string::npos && a.scheme.find("/preset") == std::string::npos) continue;
     const Row* best_fixed = nullptr;
@@ -287,9 +288,17 @@ int run_bench_accuracy(int argc, char** argv) {
         best_fixed = &f;
     char fixed[64] = "none as accurate";
     if (best_fixed) std::snprintf(fixed, sizeof fixed, "%s, %.2g", best_fixed->scheme.c_str(), best_fixed->dt);
-    std::printf("%-28s %6d %11.3e %11.4f   %-28s %11s %8s\n", a.scheme.c_str(), a.nodes, a.error, a.wall_time, fixed,
+    // The fixed runs of the same N, both schemes, every Newton tolerance: a fixed step of exactly
+    // this error (equal_error_cost.h).
+    std::vector<ErrorCost> fixed_runs;
+    for (const auto& f : dynamic)
+      if (f.scheme.find('/') == std::string::npos && f.nodes == a.nodes) fixed_runs.push_back({f.error, f.wall_time});
+    const double at_equal_error = wall_time_at_error(fixed_runs, a.error);
+    char equal[32] = "-";
+    if (std::isfinite(at_equal_error)) std::snprintf(equal, sizeof equal, "%.2fx", at_equal_error / a.wall_time);
+    std::printf("%-28s %6d %11.3e %11.4f   %-28s %11s %8s %15s\n", a.scheme.c_str(), a.nodes, a.error, a.wall_time, fixed,
                 best_fixed ? std::to_string(best_fixed->wall_time).substr(0, 7).c_str() : "-",
-                best_fixed ? (std::to_string(best_fixed->wall_time / a.wall_time).substr(0, 5) + "x").c_str() : "-");
+                best_fixed ? (std::to_string(best_fixed->wall_time / a.wall_time).substr(0, 5) + "x").c_str() : "-", equal);
   }
 
   std::string table = "problem,scheme,dt,nodes,rel_tol,error,wall_time,iterations,ok\n";

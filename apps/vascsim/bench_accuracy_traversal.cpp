@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "apps/vascsim/equal_error_cost.h"
 #include "sim/run/compile.h"
 #include "sim/run/run.h"
 
@@ -173,29 +174,6 @@ void print_traversal_row(const TraversalRow& r) {
               r.ok ? "" : "  FAILED");
 }
 
-namespace {
-
-// s, the wall time a fixed step of exactly `deviation` would take: log-log interpolation along
-// the fixed steps' own front (no faster fixed step more accurate) between the two points that
-// bracket it; NaN outside the front. The grid's nearest point as accurate can be a step twice as
-// fine, which made "3x" swing between 2.3x and 5.4x with a 3 % change of error.
-double fixed_wall_time_at(const std::vector<TraversalRow>& sorted_by_wall_time, double deviation) {
-  std::vector<const TraversalRow*> front;
-  for (const auto& f : sorted_by_wall_time)
-    if (f.fixed && f.body_deviation > 0 && (front.empty() || f.body_deviation < front.back()->body_deviation)) front.push_back(&f);
-  for (std::size_t k = 0; k + 1 < front.size(); ++k) {
-    const TraversalRow& coarse = *front[k];
-    const TraversalRow& fine = *front[k + 1];
-    if (deviation <= coarse.body_deviation && deviation >= fine.body_deviation) {
-      const double s = std::log(deviation / coarse.body_deviation) / std::log(fine.body_deviation / coarse.body_deviation);
-      return coarse.wall_time * std::pow(fine.wall_time / coarse.wall_time, s);
-    }
-  }
-  return std::numeric_limits<double>::quiet_NaN();
-}
-
-}  // namespace
-
 void print_traversal_comparison(const std::vector<TraversalRow>& rows) {
   std::vector<TraversalRow> sorted;
   for (const auto& r : rows)
@@ -209,6 +187,9 @@ void print_traversal_comparison(const std::vector<TraversalRow>& rows) {
       best = r.body_deviation;
       print_traversal_row(r);
     }
+  std::vector<ErrorCost> fixed_runs;
+  for (const auto& f : sorted)
+    if (f.fixed) fixed_runs.push_back({f.body_deviation, f.wall_time});
   std::printf("\nAgainst the fastest fixed step of equal or smaller body deviation (and a fixed step of equal deviation,\n"
               "interpolated log-log along the fixed steps' front):\n");
   for (const auto& a : sorted) {
@@ -216,7 +197,7 @@ void print_traversal_comparison(const std::vector<TraversalRow>& rows) {
     const TraversalRow* fixed = nullptr;
     for (const auto& f : sorted)
       if (f.fixed && f.body_deviation <= a.body_deviation && (!fixed || f.wall_time < fixed->wall_time)) fixed = &f;
-    const double interpolated = fixed_wall_time_at(sorted, a.body_deviation);
+    const double interpolated = wall_time_at_error(fixed_runs, a.body_deviation);
     char at_equal_error[64] = "";
     if (std::isfinite(interpolated))
       std::snprintf(at_equal_error, sizeof at_equal_error, "; at equal deviation %.3f s, %.2fx", interpolated,
