@@ -7,6 +7,9 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include "sim/rod/loads.h"
 #include "sim/run/compile.h"
@@ -219,6 +222,49 @@ TEST(RodDynamics, CrossFlowDragStiffnessIsTheVelocityJacobian) {
     for (int row = 0; row < v.size(); ++row)
       EXPECT_NEAR(k.at(row, col), -250.0 * df_dv[row], 1e-6 * (1.0 + std::abs(k.at(row, col)))) << row << ", " << col;
   }
+}
+
+// The run keeps the drag's step tangents in a cache (loads.h): whatever the order in which steps
+// of other starts and lengths come, a cached call gives the forces of a call from scratch.
+TEST(RodDynamics, CrossFlowDragTangentCacheNeverServesAnotherStep) {
+  Scene scene;
+  scene.has_environment = false;
+  scene.rod.nodes = 6;
+  scene.loads.drag.enabled = true;
+  const Model model = *compile(scene);
+  const QuadraticDragModule drag(model.rod, scene.loads.drag);
+  const std::unique_ptr<ModuleCache> cache = drag.make_cache();
+  ASSERT_NE(cache, nullptr);
+  State a = initial_state(model), b = initial_state(model);
+  for (int i = 0; i < model.nodes(); ++i) {
+    a.v[2 * i + 1] = 0.5 * i;                        // the rod swings round: its tangents turn in a step
+    b.x[2 * i + 1] = 0.01 * std::sin(2.0 * i);       // bent
+    b.v[2 * i] = -0.2 * i;
+  }
+  State b_moving = b;
+  b_moving.v[3] += 0.7;  // same positions, other velocities
+  Eigen::VectorXd v(2 * model.nodes());
+  for (int k = 0; k < v.size(); ++k) v[k] = 0.3 * std::cos(1.3 * k + 0.2);
+  const Controls controls;
+  auto force = [&](const State& start, double h, ModuleCache* with) {
+    ForceContext ctx = ForceContext::at(start, controls);
+    ctx.t = start.t + h;
+    ctx.v = &v;
+    ctx.cache = with;
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(v.size());
+    drag.add(ctx, f, nullptr);
+    return f;
+  };
+  const std::vector<std::pair<const State*, double>> calls = {
+      {&a, 0.01}, {&a, 0.01}, {&a, 0.02}, {&b, 0.02}, {&b_moving, 0.02}, {&a, 0.01}, {&a, 0.0}};
+  for (std::size_t k = 0; k < calls.size(); ++k) {
+    const Eigen::VectorXd cached = force(*calls[k].first, calls[k].second, cache.get());
+    const Eigen::VectorXd fresh = force(*calls[k].first, calls[k].second, nullptr);
+    EXPECT_EQ(cached, fresh) << "call " << k;
+  }
+  // The calls differ: a cache that ignored the start or the step would have failed above.
+  EXPECT_GT((force(a, 0.01, nullptr) - force(a, 0.02, nullptr)).norm(), 1e-9);
+  EXPECT_GT((force(b, 0.02, nullptr) - force(b_moving, 0.02, nullptr)).norm(), 1e-9);
 }
 
 // External forces accelerate the rod along themselves: after one step of a free rod the

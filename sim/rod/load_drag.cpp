@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "sim/log/channel_names.h"
 #include "sim/rod/loads.h"
@@ -8,21 +9,29 @@ namespace vascsim {
 
 namespace {
 
-// Unit tangent at node i of the polyline x + h v (2N; m, m/s, s): the mean direction of its
-// edges, or its one edge at the ends and where the rod folds back on itself (the mean vanishes
-// there). Evaluated per edge so that no moved copy of the rod is made on this hot path.
-Vec2 node_tangent(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double h, int i, int nodes) {
-  auto edge_direction = [&](int e) -> Vec2 {
+// Unit tangents at the nodes of the polyline x + h v (2N; m, m/s, s), into `tangents` (2 x N):
+// the mean direction of a node's two edges, or its one edge at the ends and where the rod folds
+// back on itself (the mean vanishes there). Each edge's direction is computed once, and no moved
+// copy of the rod is made on this hot path.
+void node_tangents(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double h, Eigen::Matrix2Xd& tangents) {
+  const int nodes = static_cast<int>(x.size() / 2);
+  tangents.resize(2, nodes);
+  Vec2 behind(1.0, 0.0);
+  for (int e = 0; e + 1 < nodes; ++e) {
     Vec2 d = x.segment<2>(2 * e + 2) - x.segment<2>(2 * e);
     if (h != 0.0) d += h * (v.segment<2>(2 * e + 2) - v.segment<2>(2 * e));
     const double length = d.norm();
-    return length > 0.0 ? Vec2(d / length) : Vec2(1.0, 0.0);
-  };
-  const Vec2 ahead = edge_direction(std::min(i, nodes - 2));
-  if (i == 0 || i == nodes - 1) return ahead;
-  const Vec2 mean = edge_direction(i - 1) + ahead;
-  const double length = mean.norm();
-  return length > 1e-9 ? Vec2(mean / length) : ahead;
+    const Vec2 ahead = length > 0.0 ? Vec2(d / length) : Vec2(1.0, 0.0);
+    if (e == 0) {
+      tangents.col(0) = ahead;
+    } else {
+      const Vec2 mean = behind + ahead;
+      const double mean_length = mean.norm();
+      tangents.col(e) = mean_length > 1e-9 ? Vec2(mean / mean_length) : ahead;
+    }
+    behind = ahead;
+  }
+  tangents.col(nodes - 1) = behind;
 }
 
 }  // namespace
@@ -42,6 +51,21 @@ QuadraticDragModule::QuadraticDragModule(const RodModel& rod, const DragSpec& sp
 }
 
 std::string QuadraticDragModule::channel() const { return channel::kDragForce; }
+
+std::unique_ptr<ModuleCache> QuadraticDragModule::make_cache() const {
+  if (!cross_flow_) return nullptr;
+  return std::make_unique<DragTangentCache>();
+}
+
+const Eigen::Matrix2Xd& QuadraticDragModule::step_tangents(const State& start, double h, DragTangentCache& cache) const {
+  if (h == cache.h && start.x.size() == cache.start_x.size() && start.x == cache.start_x && start.v == cache.start_v)
+    return cache.tangents;
+  node_tangents(start.x, start.v, h, cache.tangents);
+  cache.start_x = start.x;
+  cache.start_v = start.v;
+  cache.h = h;
+  return cache.tangents;
+}
 
 void QuadraticDragModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force,
                               BandedMatrix* stiffness) const {
@@ -72,11 +96,16 @@ void QuadraticDragModule::add_cross_flow(const ForceContext& ctx, Eigen::Ref<Eig
   const Eigen::VectorXd& v = *ctx.v;
   // The tangents' configuration (loads.h): the step's start carried to its end.
   const double h = ctx.start ? ctx.t - ctx.start->t : 0.0;  // s, the step (0: a committed state)
-  const Eigen::VectorXd& x = h > 0.0 ? ctx.start->x : *ctx.x;
-  const Eigen::VectorXd& x_rate = h > 0.0 ? ctx.start->v : *ctx.v;
   const int nodes = static_cast<int>(c_.size());
+  DragTangentCache scratch;
+  const Eigen::Matrix2Xd* tangents = &scratch.tangents;
+  if (h > 0.0) {
+    tangents = &step_tangents(*ctx.start, h, cache_or(ctx, scratch));
+  } else {
+    node_tangents(*ctx.x, v, 0.0, scratch.tangents);
+  }
   for (int i = 0; i < nodes; ++i) {
-    const Vec2 t = node_tangent(x, x_rate, std::max(h, 0.0), i, nodes);
+    const Vec2 t = tangents->col(i);
     const Vec2 n(-t.y(), t.x());
     const Vec2 vi = v.segment<2>(2 * i);
     const double vt = vi.dot(t), vn = vi.dot(n);

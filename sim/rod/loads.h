@@ -98,6 +98,7 @@ class QuadraticDragModule : public ForceModule {
   QuadraticDragModule(const RodModel& rod, const DragSpec& spec);
   std::string channel() const override;
   void add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const override;
+  std::unique_ptr<ModuleCache> make_cache() const override;
   // kg/m, per node: c_i of the tip mode, or the normal c_n,i of the nodes mode (0 without drag).
   const Eigen::VectorXd& coefficients() const { return c_; }
   // kg/m, per node, c_t,i: along the rod in the nodes mode; equal to coefficients() in the tip mode.
@@ -106,6 +107,14 @@ class QuadraticDragModule : public ForceModule {
  private:
   void add_isotropic(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const;
   void add_cross_flow(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> force, BandedMatrix* stiffness) const;
+  // The tangents of a step (start carried h along its velocity), kept in the run's cache: every
+  // Newton iterate of the step asks for the same ones (a third of the module's cost otherwise).
+  struct DragTangentCache : ModuleCache {
+    Eigen::VectorXd start_x, start_v;  // m, m/s: the step's start they were computed for
+    double h = -1.0;                   // s
+    Eigen::Matrix2Xd tangents;         // 2 x N, unit
+  };
+  const Eigen::Matrix2Xd& step_tangents(const State& start, double h, DragTangentCache& cache) const;
 
   bool cross_flow_ = false;
   Eigen::VectorXd c_;             // (N), kg/m
