@@ -3,12 +3,16 @@
 // and one byte, not its size; and the readers that use it still refuse an oversized file by name.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
 #include "sim/io/bounded_read.h"
+#include "sim/io/png_file.h"
 #include "sim/io/scene_reader.h"
+#include "sim/io/sweep_manifest.h"
 #include "sim/io/sweep_spec.h"
 #include "sim/scene/input_error.h"
 #include "tests/cli_test_support.h"
@@ -59,6 +63,31 @@ TEST(BoundedRead, OversizedSceneAndSweepFilesAreRefusedByName) {
     std::ofstream(path, std::ios::binary | std::ios::trunc) << "{}" << std::string(limit - 2, ' ');
     EXPECT_EQ(error_reading(path, sweep).find("larger than"), std::string::npos);
   }
+}
+
+// The PNG reader (vessel masks, goldens) and the sweep manifest reader, whose caps are large,
+// refuse a file by its size before reading it: a (sparse) file one byte past the cap is refused
+// by name, at once.
+TEST(BoundedRead, OversizedPngAndManifestAreRefusedByName) {
+  const std::string dir = test::fresh_temp_dir("bounded_read_big");
+  const std::string png = dir + "/big.png", manifest = dir + "/manifest.json";
+  std::ofstream(png, std::ios::binary).close();
+  std::filesystem::resize_file(png, io::kMaxPngBytes + 1);
+  std::ofstream(manifest, std::ios::binary).close();
+  std::filesystem::resize_file(manifest, kMaxManifestBytes + 1);
+  auto message_of = [](const std::function<void()>& read) -> std::string {
+    try {
+      read();
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  const std::string png_error = message_of([&] { io::read_png(png, 1); });
+  EXPECT_NE(png_error.find(png + ": cannot read PNG (larger than 256 MB)"), std::string::npos) << png_error;
+  const std::string manifest_error = message_of([&] { read_sweep_manifest(manifest); });
+  EXPECT_NE(manifest_error.find(manifest + ": larger than 256 MB"), std::string::npos) << manifest_error;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

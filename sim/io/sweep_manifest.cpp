@@ -14,9 +14,6 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;  // written in a fixed, readable order: axes as the sweep file has them
 
-// The largest manifest read: kMaxSweepRuns entries of a few hundred bytes.
-constexpr std::size_t kMaxManifestBytes = std::size_t(256) << 20;
-
 }  // namespace
 
 std::string run_scene_path(const std::string& id) { return "runs/" + id + "/scene.json"; }
@@ -79,7 +76,8 @@ SweepManifest read_sweep_manifest(const std::string& path) {
     throw InputError(path + ": cannot open the sweep manifest (is this a directory made by vascsim sweep?)");
   // The size first: a buffer of the limit would cost more than reading a typical manifest.
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec || size > kMaxManifestBytes) throw InputError(path + ": larger than the limit for a sweep manifest");
+  if (ec || size > kMaxManifestBytes)
+    throw InputError(path + ": larger than " + std::to_string(kMaxManifestBytes >> 20) + " MB, the limit for a sweep manifest");
   std::string text(static_cast<std::size_t>(size), '\0');
   f.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (static_cast<std::uintmax_t>(f.gcount()) != size) throw InputError(path + ": cannot read the sweep manifest");

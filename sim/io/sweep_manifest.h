@@ -35,6 +35,8 @@ struct SweepManifest {
 
 SweepManifest manifest_of(const SweepPlan& plan);
 std::string sweep_manifest_json(const SweepManifest& manifest);
+// The largest manifest read: kMaxSweepRuns entries of a few hundred bytes.
+inline constexpr std::size_t kMaxManifestBytes = std::size_t(256) << 20;
 // Reads DIR/manifest.json strictly. Throws InputError naming the file and the JSON path.
 SweepManifest read_sweep_manifest(const std::string& path);
 // A run's scene, relative to the sweep directory: "runs/<id>/scene.json".
