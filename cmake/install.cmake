@@ -1,6 +1,6 @@
 # What `cmake --install` puts under the prefix P, and the CMake package that lets other projects
 # use it with find_package(vascsim 0.2 REQUIRED) (docs/install.md):
-#   P/bin/vascsim
+#   P/bin/vascsim, P/libexec/vascsim/vascsim-render (the program that draws, with the renderer)
 #   P/lib/libvascsim_{sim,io,render}.a (.so.0.2.0 with VASCSIM_SHARED), P/lib/cmake/vascsim/
 #   P/include/vascsim/{sim,render}/...   the API's headers and what they include, nothing else
 #   P/share/vascsim/{scenes,assets,sweeps,docs,python,examples}, README.md
@@ -23,6 +23,10 @@ install(TARGETS ${VASCSIM_INSTALLED_LIBRARIES} vascsim_sim_package EXPORT vascsi
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime NAMELINK_COMPONENT development)
 install(TARGETS vascsim RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+if(VASCSIM_RENDER)
+  # The program vascsim hands the commands that draw (apps/vascsim/renderer_program.h).
+  install(TARGETS vascsim-render RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/vascsim COMPONENT runtime)
+endif()
 
 # The API: scene reading, compile, run, the frame log's reader and writer and its metadata, the
 # run summary; rendering a run directory.

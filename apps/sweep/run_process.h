@@ -6,9 +6,9 @@
 // same entry at once.
 //
 // The process is forked from the sweep and runs the `vascsim run` command there (`run_command`),
-// or execs the vascsim executable. Forking is the default because an exec of vascsim loads the
-// renderer's libraries (OSMesa with LLVM, libav*) for ~40 ms before a run that may take 5 ms;
-// the forked child has them already and starts in about a millisecond (vascsim bench sweep).
+// or execs the vascsim executable. Forking is the default: the forked child starts in about a
+// millisecond (vascsim bench sweep), an exec'd one in several (once 40-120 ms, when vascsim still
+// loaded the renderer's libraries: apps/vascsim/renderer_program.h).
 #pragma once
 
 #include <sys/types.h>

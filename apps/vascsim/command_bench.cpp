@@ -21,7 +21,7 @@ const std::vector<Benchmark>& benchmarks() {
       {"accuracy", "error against wall time: rod references over dt, N, tolerance, scheme and preset; the maze traversals (CSV)", run_bench_accuracy},
       {"traversal", "full maze traversal: wall time and real-time factor per preset", run_bench_traversal},
       {"sweep", "sweep overhead per run (expand, process start, merge) on 100 tiny runs; --jobs 2 utilisation", run_bench_sweep},
-#ifdef VASCSIM_HAVE_RENDER
+#if defined(VASCSIM_HAVE_RENDER) || defined(VASCSIM_RENDER_PROGRAM)
       {"render", "renderer frames/s at 720p and 1080p, MP4 and PNG", run_bench_render},
       {"replay", "replay server: frame latency from a client, open time and memory on a 10^6-frame log", run_bench_replay},
 #endif

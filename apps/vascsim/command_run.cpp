@@ -121,6 +121,9 @@ int run_run_command(int argc, char** argv) {
     print_usage();
     return 0;
   }
+#ifdef VASCSIM_RENDER_PROGRAM
+  if (args.flag("render")) return run_in_renderer(argc, argv);  // the run and its video, in the program that draws
+#endif
   if (args.positional().size() != 1) throw UsageError("expected exactly one SCENE file");
   const auto out = args.value("out");
   if (!out) throw UsageError("--out DIR is required");

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "apps/sweep/run_process.h"
 #include "apps/sweep/sweep_directory.h"
@@ -106,6 +107,9 @@ int merge_command(int argc, char** argv) {
     return 0;
   }
   if (args.positional().size() != 1) throw UsageError("expected exactly one sweep directory DIR");
+#ifdef VASCSIM_RENDER_PROGRAM
+  if (!args.flag("no-plots")) return run_in_renderer(argc, argv);  // the plots are drawn there
+#endif
   const sweep::SweepDirectory dir = sweep::open_sweep_directory(args.positional().front());
   const sweep::MergeReport report = sweep::merge_sweep(dir, args.flag("force"), !args.flag("no-plots"));
   if (!args.flag("quiet")) std::printf("%s\n", report.table.c_str());
@@ -123,6 +127,16 @@ void merge_after_run(const sweep::SweepDirectory& dir, bool quiet) {
     std::printf("results.csv is from an earlier merge: vascsim sweep merge %s --force refreshes it\n", dir.dir.c_str());
     return;
   }
+#ifdef VASCSIM_RENDER_PROGRAM
+  // The plots are drawn by vascsim-render: the merge runs there, as `vascsim sweep merge` would.
+  if (!quiet) std::printf("\n");
+  std::fflush(stdout);
+  std::vector<std::string> merge = {"sweep", "merge", dir.dir};
+  if (quiet) merge.push_back("--quiet");
+  if (const int status = run_renderer_child(merge); status != 0)
+    throw InputError("merging " + dir.dir + " failed (exit code " + std::to_string(status) + "); the runs are kept");
+  return;
+#endif
   const sweep::MergeReport report = sweep::merge_sweep(dir, false);
   if (!quiet) std::printf("\n%s\n", report.table.c_str());
   for (const auto& path : report.written) std::printf("wrote %s\n", path.c_str());

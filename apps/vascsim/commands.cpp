@@ -32,7 +32,7 @@ const std::vector<Command>& commands() {
       {"sweep", "run a parameter sweep locally, with GNU parallel or Slurm; merge its results", run_sweep_command},
       {"export", "write a run's frame log as CSV files (MATLAB, Excel, R)", run_export_command},
       {"bench", "measure speed and accuracy (vascsim bench --help)", run_bench_command},
-#ifdef VASCSIM_HAVE_RENDER
+#if defined(VASCSIM_HAVE_RENDER) || defined(VASCSIM_RENDER_PROGRAM)
       {"render", "render a run's frame log to MP4, PNG frames and plots", run_render_command},
       {"diff", "compare two PNG images (golden-image tests)", run_diff_command},
       {"replay", "serve a run (or two) to a web browser: scrub, zoom, compare, export", run_replay_command},

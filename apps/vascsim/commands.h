@@ -4,6 +4,8 @@
 
 #include <vector>
 
+#include "apps/vascsim/renderer_program.h"
+
 namespace vascsim::cli {
 
 struct Command {
@@ -28,12 +30,20 @@ int run_bench_traversal(int argc, char** argv);
 int run_bench_speed(int argc, char** argv);
 int run_bench_accuracy(int argc, char** argv);
 int run_bench_sweep(int argc, char** argv);
-#ifdef VASCSIM_HAVE_RENDER
+#if defined(VASCSIM_HAVE_RENDER)
 int run_render_command(int argc, char** argv);
 int run_diff_command(int argc, char** argv);
 int run_replay_command(int argc, char** argv);
 int run_bench_replay(int argc, char** argv);
 int run_bench_render(int argc, char** argv);
+#elif defined(VASCSIM_RENDER_PROGRAM)
+// This program has no renderer: the commands that draw hand their command line over to
+// vascsim-render, which has (apps/vascsim/renderer_program.h).
+inline int run_render_command(int argc, char** argv) { return run_in_renderer(argc, argv); }
+inline int run_diff_command(int argc, char** argv) { return run_in_renderer(argc, argv); }
+inline int run_replay_command(int argc, char** argv) { return run_in_renderer(argc, argv); }
+inline int run_bench_replay(int argc, char** argv) { return run_in_renderer(argc, argv); }
+inline int run_bench_render(int argc, char** argv) { return run_in_renderer(argc, argv); }
 #endif
 
 }  // namespace vascsim::cli

@@ -31,7 +31,7 @@ dpkg --dry-run -i "$runtime" "$dev" > "$work/dry-run.log" 2>&1 || { cat "$work/d
 root=$work/root
 dpkg-deb -x "$runtime" "$root"
 dpkg-deb -x "$dev" "$root"
-for f in usr/bin/vascsim usr/share/vascsim/scenes/bifurcation.json usr/share/man/man1/vascsim.1 \
+for f in usr/bin/vascsim usr/libexec/vascsim/vascsim-render usr/share/vascsim/scenes/bifurcation.json usr/share/man/man1/vascsim.1 \
          usr/share/bash-completion/completions/vascsim usr/lib/cmake/vascsim/vascsimConfig.cmake \
          usr/include/vascsim/sim/run/run.h; do
   [[ -e $root/$f ]] || fail "$f is not in the packages"

@@ -19,7 +19,10 @@ for f in bin/vascsim lib/cmake/vascsim/vascsimConfig.cmake lib/cmake/vascsim/vas
          share/bash-completion/completions/vascsim; do
   [[ -e $prefix/$f ]] || fail "$f not installed"
 done
-if [[ $render == ON ]]; then [[ -e $prefix/include/vascsim/render/render_run.h ]] || fail "render headers not installed"; fi
+if [[ $render == ON ]]; then
+  [[ -e $prefix/include/vascsim/render/render_run.h ]] || fail "render headers not installed"
+  [[ -x $prefix/libexec/vascsim/vascsim-render ]] || fail "libexec/vascsim/vascsim-render (the program that draws) not installed"
+fi
 
 # Headers: every quoted include of an installed header is installed too, and the private ones
 # (JSON parsing, the command line, the replay server) are not.
