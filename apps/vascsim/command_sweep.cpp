@@ -130,7 +130,6 @@ void merge_after_run(const sweep::SweepDirectory& dir, bool quiet) {
 #ifdef VASCSIM_RENDER_PROGRAM
   // The plots are drawn by vascsim-render: the merge runs there, as `vascsim sweep merge` would.
   if (!quiet) std::printf("\n");
-  std::fflush(stdout);
   std::vector<std::string> merge = {"sweep", "merge", dir.dir};
   if (quiet) merge.push_back("--quiet");
   if (const int status = run_renderer_child(merge); status != 0)

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -34,12 +35,14 @@ std::string renderer_program() {
 int run_in_renderer(int argc, char** argv) {
   (void)argc;
   const std::string program = renderer_program();
+  std::fflush(nullptr);  // what this process printed must not vanish with it
   ::execv(program.c_str(), argv);
   throw InputError("cannot start " + program + ": " + std::strerror(errno));
 }
 
 int run_renderer_child(const std::vector<std::string>& args) {
   const std::string program = renderer_program();
+  std::fflush(nullptr);  // the child's output must come after what this process printed
   std::vector<std::string> owned = {"vascsim"};
   owned.insert(owned.end(), args.begin(), args.end());
   std::vector<char*> argv;
