@@ -7,7 +7,7 @@
 //
 // The process is forked from the sweep and runs the `vascsim run` command there (`run_command`),
 // or execs the vascsim executable. Forking is the default: the forked child starts in about a
-// millisecond (vascsim bench sweep), an exec'd one in several (once 40-120 ms, when vascsim still
+// millisecond (vascsim bench sweep), an exec'd one in several (once 40-100 ms, when vascsim still
 // loaded the renderer's libraries: apps/vascsim/renderer_program.h).
 #pragma once
 

@@ -1,7 +1,7 @@
 // The commands that draw (render, diff, replay, run --render, sweep merge with its plots, bench
 // render and replay) run in vascsim-render: the same command line, linked with the renderer.
 // vascsim itself is not, because OSMesa (with LLVM) and libav* bring about 130 shared libraries
-// that take some 80 ms and 75 MB to load, which every `vascsim run` that GNU parallel or a Slurm
+// that take 40-100 ms and 75 MB to load, which every `vascsim run` that GNU parallel or a Slurm
 // array starts would pay for a run that may take 50 ms. vascsim finds vascsim-render next to
 // itself (a build tree) or in ../libexec/vascsim (an installation, cmake/install.cmake) and
 // hands it the command line. A build without the renderer has neither.
