@@ -189,13 +189,19 @@ TEST(RodDynamics, CrossFlowDragTerminalVelocityPerDirection) {
   }
 }
 
+// A free rod of `nodes` nodes in the default fluid, with cross-flow drag and nothing else.
+Scene free_rod_in_drag(int nodes) {
+  Scene scene;
+  scene.has_environment = false;
+  scene.rod.nodes = nodes;
+  scene.loads.drag.enabled = true;
+  return scene;
+}
+
 // The drag's Newton matrix is -dF/dv * dv_dx (the tangent is lagged, so F depends on v alone
 // within a step), checked by central differences on a bent rod moving every which way.
 TEST(RodDynamics, CrossFlowDragStiffnessIsTheVelocityJacobian) {
-  Scene scene;
-  scene.has_environment = false;
-  scene.rod.nodes = 5;
-  scene.loads.drag.enabled = true;
+  const Scene scene = free_rod_in_drag(5);
   const Model model = *compile(scene);
   const QuadraticDragModule drag(model.rod, scene.loads.drag);
   State start = initial_state(model);
@@ -227,10 +233,7 @@ TEST(RodDynamics, CrossFlowDragStiffnessIsTheVelocityJacobian) {
 // The run keeps the drag's step tangents in a cache (loads.h): whatever the order in which steps
 // of other starts and lengths come, a cached call gives the forces of a call from scratch.
 TEST(RodDynamics, CrossFlowDragTangentCacheNeverServesAnotherStep) {
-  Scene scene;
-  scene.has_environment = false;
-  scene.rod.nodes = 6;
-  scene.loads.drag.enabled = true;
+  const Scene scene = free_rod_in_drag(6);
   const Model model = *compile(scene);
   const QuadraticDragModule drag(model.rod, scene.loads.drag);
   const std::unique_ptr<ModuleCache> cache = drag.make_cache();
