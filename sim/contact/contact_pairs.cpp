@@ -40,12 +40,12 @@ ContactGeometry::ContactGeometry(const std::vector<WallSegment>& walls, double r
       wall_field_(walls, 4.0 * (rod_radius + reach) + max_edge_length),
       corner_field_(corners_, 4.0 * (rod_radius + reach) + max_edge_length) {}
 
-void ContactGeometry::refresh_neighbours(const Eigen::VectorXd& x, ContactNeighbours& c) const {
+double ContactGeometry::refresh_neighbours(const Eigen::VectorXd& x, ContactNeighbours& c) const {
   const int nodes = static_cast<int>(x.size() / 2);
   if (c.anchor.size() == x.size()) {
-    bool moved = false;
-    for (int i = 0; i < nodes && !moved; ++i) moved = (x.segment<2>(2 * i) - c.anchor.segment<2>(2 * i)).squaredNorm() > 0.25 * skin_ * skin_;
-    if (!moved) return;
+    double drift2 = 0.0;
+    for (int i = 0; i < nodes; ++i) drift2 = std::max(drift2, (x.segment<2>(2 * i) - c.anchor.segment<2>(2 * i)).squaredNorm());
+    if (drift2 <= 0.25 * skin_ * skin_) return drift2;
   }
   // Every pair within reach at any x whose nodes lie within skin/2 of the anchor is listed: a
   // node (or any point of an edge) moves at most skin/2, so its distance to a wall changes by at
@@ -79,6 +79,7 @@ void ContactGeometry::refresh_neighbours(const Eigen::VectorXd& x, ContactNeighb
       clearance = std::min(clearance, point_segment_distance_value(corner.a, a, b) - 0.5 * corner.thickness - rod_radius_);
     }
   }
+  return 0.0;
 }
 
 void ContactGeometry::for_each_pair(const Eigen::VectorXd& x, bool with_hessian,
@@ -176,14 +177,13 @@ double ContactGeometry::max_step_fraction(const Eigen::VectorXd& x, const Eigen:
   const double reach_limit = 0.5 * wall_field_.max_query_radius() - rod_radius_;
   // Moves within the neighbour lists' margin (the usual Newton update) need no grid search: x is
   // within skin/2 of the anchor, so every wall within move + r of a node is on its list.
-  refresh_neighbours(x, c);
-  double alpha = 1.0, drift2 = 0.0;
+  const double drift2 = refresh_neighbours(x, c);
+  double alpha = 1.0;
   std::vector<double> move2(static_cast<std::size_t>(nodes));  // m^2, of the full move
   for (int i = 0; i < nodes; ++i) {
     move2[static_cast<std::size_t>(i)] = dx.segment<2>(2 * i).squaredNorm();
     if (move2[static_cast<std::size_t>(i)] > reach_limit * reach_limit)
       alpha = std::min(alpha, reach_limit / std::sqrt(move2[static_cast<std::size_t>(i)]));
-    drift2 = std::max(drift2, (x.segment<2>(2 * i) - c.anchor.segment<2>(2 * i)).squaredNorm());
   }
   const double listed_move = reach_ + 0.5 * skin_;
   // A move within a `safety` share of every gap it could close cuts nothing. Most nodes in most

@@ -66,7 +66,9 @@ class ContactGeometry {
   double rod_radius() const { return rod_radius_; }
 
  private:
-  void refresh_neighbours(const Eigen::VectorXd& x, ContactNeighbours& c) const;
+  // Rebuilds the lists when a node of x has drifted more than skin/2 from their anchor. Returns
+  // the largest squared drift (m^2) of a node from the anchor the lists now have: 0 after a rebuild.
+  double refresh_neighbours(const Eigen::VectorXd& x, ContactNeighbours& c) const;
   // Corners (indices into corners_) whose capsule may lie within `margin` (m) of edge ab: a
   // superset, from the corner grid around the midpoint.
   void edge_corner_candidates(const Vec2& a, const Vec2& b, double margin, std::vector<int>& found) const;
