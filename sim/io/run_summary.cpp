@@ -40,7 +40,8 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   }
   j["newton_iterations"] = {{"total", s.newton_iterations},
                             {"mean", s.steps ? static_cast<double>(s.newton_iterations) / s.steps : 0.0},
-                            {"max", s.newton_iterations_max}};
+                            {"max", s.newton_iterations_max},
+                            {"all_attempts", s.newton_iterations_all}};
   j["frames"] = s.frames;
   j["simulated_time"] = s.simulated_time;
   j["wall_time"] = s.wall_time;

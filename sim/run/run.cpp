@@ -89,8 +89,11 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
   if (navigation_ && navigation_->paper_walls) {
     // The paper's contact: re-solve the step with updated wall forces until no node is inside.
     const State start = state_;
+    int rejected = 0;  // over all the re-solves
     for (int k = 1;; ++k) {
       report = step(*model_, state_, workspace_, controls, dt, newton_stop());
+      stats_.newton_iterations_all += report.total_iterations;
+      rejected += report.rejected;
       if (!report.ok) break;
       const PaperContactUpdate u = paper_contact_update(*navigation_->paper_walls, model_->rod.outer_radius, scene_.contact.paper_gain,
                                                         state_.x, wall_forces_);
@@ -103,8 +106,10 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
       state_ = start;
       controls.wall_forces = wall_forces_;
     }
+    report.rejected = rejected;
   } else {
     report = step(*model_, state_, workspace_, controls, dt, newton_stop());
+    stats_.newton_iterations_all += report.total_iterations;
   }
   stats_.rejected_steps += report.rejected;
   if (report.rejected > 0) stats_.warnings.step_retried.note(t_start);
@@ -349,7 +354,8 @@ bool Run::solve_equilibrium(FrameSink& sink) {
   const StaticReport report = solve_static(*model_, state_, workspace_, last_controls_);
   stats_.steps = report.increments;
   stats_.rejected_steps = report.rejected;
-  stats_.newton_iterations = report.iterations;
+  stats_.newton_iterations = report.iterations;  // of every increment, failed ones too
+  stats_.newton_iterations_all = report.iterations;
   stats_.newton_iterations_max = report.iterations;
   if (report.ok && report.negative_pivots > 0) stats_.warnings.unstable_equilibrium.note(1.0);
   if (report.ok && report.left_unstable) stats_.warnings.left_unstable.note(1.0);

@@ -52,7 +52,10 @@ struct RunWarnings {
 
 struct RunStatistics {
   int steps = 0;
-  long long newton_iterations = 0;
+  long long newton_iterations = 0;   // of the committed steps' accepted solves
+  // Every iteration the run did: also those of attempts retried shorter (Newton failure or error
+  // control) and of the paper contact's re-solves. The run's cost is in these.
+  long long newton_iterations_all = 0;
   int newton_iterations_max = 0;     // in one step
   int rejected_steps = 0;            // attempts retried with a smaller dt (Newton failed)
   int error_rejected_steps = 0;      // error control: converged steps over the tolerance, retried shorter
