@@ -13,6 +13,7 @@
 #include "sim/run/navigation.h"
 #include "sim/run/run.h"
 #include "sim/scene/input_error.h"
+#include "tests/run_test_support.h"
 
 namespace vascsim {
 namespace {
@@ -32,12 +33,7 @@ class ByteSink : public FrameSink {
   void append(const double* v, std::size_t n) { bytes.append(reinterpret_cast<const char*>(v), n * sizeof(double)); }
 };
 
-Scene default_maze(double duration) {
-  Scene s = read_scene_file(std::string(VASCSIM_SOURCE_DIR) + "/scenes/maze_default.json");
-  s.run.duration = duration;  // the first wall contacts happen from about 17 s on
-  s.run.duration_from_path = false;
-  return s;
-}
+using test::default_maze;
 
 TEST(Compile, LeavesItsSceneAloneAndResolvesACopy) {
   // A maze scene without a duration: it runs until its reference reaches the goal, plus settling.

@@ -6,32 +6,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/io/run_summary.h"
-#include "sim/io/scene_reader.h"
-#include "sim/run/compile.h"
-#include "sim/run/run.h"
+#include "tests/run_test_support.h"
 
 namespace vascsim {
 namespace {
 
-class CountingSink : public FrameSink {
- public:
-  void write(double, const std::vector<double>&) override {}
-};
-
-nlohmann::json summary_of(const Scene& scene) {
-  vascsim::Run run(compile(scene));
-  CountingSink sink;
-  EXPECT_TRUE(run.run(sink)) << run.statistics().failure;
-  return nlohmann::json::parse(run_summary_json(run.scene(), run));
-}
-
-Scene default_maze(double duration) {
-  Scene s = read_scene_file(std::string(VASCSIM_SOURCE_DIR) + "/scenes/maze_default.json");
-  s.run.duration = duration;
-  s.run.duration_from_path = false;
-  return s;
-}
+using test::default_maze;
+using test::summary_of;
 
 long long total(const nlohmann::json& s) { return s["newton_iterations"]["total"].get<long long>(); }
 long long all_attempts(const nlohmann::json& s) { return s["newton_iterations"]["all_attempts"].get<long long>(); }

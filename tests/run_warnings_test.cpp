@@ -8,35 +8,16 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/io/run_summary.h"
-#include "sim/io/scene_reader.h"
-#include "sim/run/compile.h"
-#include "sim/run/run.h"
 #include "tests/rod_test_scenes.h"
+#include "tests/run_test_support.h"
 
 namespace vascsim {
 namespace {
 
-class CountingSink : public FrameSink {
- public:
-  void write(double, const std::vector<double>&) override { ++frames; }
-  int frames = 0;
-};
+using test::default_maze;
+using test::summary_of;
 
-nlohmann::json summary_of(const Scene& scene) {
-  vascsim::Run run(compile(scene));
-  CountingSink sink;
-  EXPECT_TRUE(run.run(sink)) << run.statistics().failure;
-  return nlohmann::json::parse(run_summary_json(run.scene(), run));
-}
 nlohmann::json warnings_of(const Scene& scene) { return summary_of(scene)["warnings"]; }
-
-Scene default_maze(double duration) {
-  Scene s = read_scene_file(std::string(VASCSIM_SOURCE_DIR) + "/scenes/maze_default.json");
-  s.run.duration = duration;
-  s.run.duration_from_path = false;
-  return s;
-}
 
 void expect_count(const nlohmann::json& w, const char* name, bool happened) {
   ASSERT_TRUE(w.contains(name)) << w.dump();
