@@ -3,11 +3,22 @@
 # shared libraries and the font) are installed on this machine, dpkg accepts both packages
 # (--dry-run: every dependency satisfied, nothing installed), and the extracted tree runs
 # `vascsim run` and `vascsim render` on a shipped scene from usr/share/vascsim/scenes.
-#   deb_package_test.sh BUILD_DIR WORK_DIR
+#   deb_package_test.sh BUILD_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
-build=$1 work=$2
+build=$1 source=$2 work=$3
 fail() { echo "deb_package_test: FAIL: $*" >&2; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
+
+# cpack builds the whole tree before it packages it. On a tree whose sources changed since the
+# last build (ctest run without building first) that rebuild, not the packaging, would fill the
+# test's time limit: say so at once instead. A source newer than every program and library the
+# build made has not been built.
+newest=$(find "$build/sim" "$build/render" "$build/apps" -type f \( -name '*.a' -o -name '*.so*' -o -perm -u+x \) \
+           -printf '%T@ %p\n' 2>/dev/null | sort -n | tail -1 | cut -d' ' -f2-)
+[[ -n $newest ]] || fail "$build has no programs or libraries; build first (cmake --build $build)"
+changed=$(find "$source/sim" "$source/render" "$source/apps" "$source/CMakeLists.txt" -newer "$newest" \
+            \( -name '*.cpp' -o -name '*.h' -o -name 'CMakeLists.txt' \) -print -quit)
+[[ -z $changed ]] || fail "$changed changed after the last build ($newest); build first (cmake --build $build)"
 
 cpack --config "$build/CPackConfig.cmake" -B "$work" > "$work/cpack.log" 2>&1 || { cat "$work/cpack.log"; fail "cpack"; }
 version=$(sed -n 's/^set(CPACK_PACKAGE_VERSION "\(.*\)")/\1/p' "$build/CPackConfig.cmake")
