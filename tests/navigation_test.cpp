@@ -13,6 +13,7 @@
 #include "sim/run/compile.h"
 #include "sim/run/navigation.h"
 #include "sim/run/run.h"
+#include "tests/sanitizer_budget.h"
 
 namespace vascsim {
 namespace {
@@ -64,9 +65,13 @@ struct Modes {
 
 class Traversal : public ::testing::TestWithParam<Modes> {};
 
-TEST_P(Traversal, ReachesTheGoalOnTwentyOneMazes) {
+// 21 mazes; under the sanitizers the paper's contact, which re-solves each step up to 50 times
+// (a quarter of the sanitizer run's test time on 21 mazes), runs the first 7, seed 3 (force mode's
+// worst tracking error) among them.
+TEST_P(Traversal, ReachesTheGoalOnEachMaze) {
   const Modes m = GetParam();
-  for (std::uint64_t seed = 1; seed <= 21; ++seed) {
+  const int mazes = m.contact == ContactMode::kPaper ? test::sweep_size(21, 7) : 21;
+  for (std::uint64_t seed = 1; seed <= static_cast<std::uint64_t>(mazes); ++seed) {
     const RunStatistics s = run_scene(fast_scene(seed, m.actuation, m.contact));
     ASSERT_FALSE(s.failed) << m.name << " seed " << seed << ": " << s.failure;
     EXPECT_TRUE(s.goal_reached) << m.name << " seed " << seed;
