@@ -27,6 +27,7 @@ const BadScene kBadScenes[] = {
     {"inner_radius", R"({"rod": {"outer_radius": 0.002, "inner_radius": 0.002}})",
      "/rod/inner_radius: expected a number in [0, outer_radius = 0.002), got 0.002"},
     {"poisson", R"({"rod": {"poisson_ratio": 0.7}})", "/rod/poisson_ratio: expected a number in [-1, 0.5], got 0.7"},
+    {"dt_tiny", R"({"solver": {"dt": 1e-300}})", "/solver/dt: expected a number in [1e-09, 10], got 1e-300"},
     {"solver_name", R"({"path": {"solver": "dfs"}})", "/path/solver: expected one of \"wall_follower\", \"bfs\", got \"dfs\""},
     {"maze_not_object", R"({"maze": 5})", "/maze: expected an object, got 5"},
     {"walls_and_rows", R"({"maze": {"rows": 3, "walls": [{"from": [0, 0], "to": [1, 0]}]}})",

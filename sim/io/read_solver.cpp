@@ -36,7 +36,9 @@ void read_solver(FieldReader& in, SolverSpec& out) {
   // chose steps by error.
   const bool fixed_dt = in.raw("dt") && !in.raw("adaptive");
   out.adaptive = read_step_control(in, fixed_dt ? StepControl::kRetry : out.adaptive);
-  out.dt = in.positive("dt", out.dt, 10.0);
+  // Below a nanosecond the inertia term M/h^2 swamps the stiffness (and overflows past ~1e-150 s):
+  // such a dt is a typo, refused here rather than failing the run as a singular Newton matrix.
+  out.dt = in.number("dt", out.dt, 1e-9, 10.0);
   out.rtol = in.number("rtol", out.rtol, 0.0, 1.0);
   out.atol_position = in.number("atol_position", out.atol_position, 0.0, 1.0);
   out.atol_velocity = in.number("atol_velocity", out.atol_velocity, 0.0, 100.0);
