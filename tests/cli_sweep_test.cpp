@@ -16,12 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* const kAxes = R"({"/control/kp": [2, 4], "/maze/seed": {"from": 1, "to": 4}})";
-
-bool has(const std::string& text, const std::string& needle) { return text.find(needle) != std::string::npos; }
-
-CommandResult sweep_command(const std::string& arguments) { return run_vascsim("sweep " + arguments); }
-
 TEST(SweepCli, RunsEveryEntryInItsOwnDirectoryAndMerges) {
   const std::string dir = fresh_temp_dir("sweep_local");
   const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);

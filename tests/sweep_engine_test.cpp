@@ -19,12 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* const kAxes = R"({"/control/kp": [2, 4], "/maze/seed": {"from": 1, "to": 4}})";
-
-bool has(const std::string& text, const std::string& needle) { return text.find(needle) != std::string::npos; }
-
-CommandResult sweep_command(const std::string& arguments) { return run_vascsim("sweep " + arguments); }
-
 // The local engine's table for the test sweep, as the reference.
 std::string local_table(const std::string& dir, const std::string& sweep) {
   const CommandResult r = sweep_command(sweep + " --out " + dir + "/local --jobs 2 --quiet");

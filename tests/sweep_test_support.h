@@ -6,7 +6,17 @@
 #include <string>
 #include <vector>
 
+#include "tests/cli_test_support.h"
+
 namespace vascsim::test {
+
+// The axes of the test sweep: two gains by four maze seeds, 8 runs.
+inline const char* const kAxes = R"({"/control/kp": [2, 4], "/maze/seed": {"from": 1, "to": 4}})";
+
+inline bool has(const std::string& text, const std::string& needle) { return text.find(needle) != std::string::npos; }
+
+// `vascsim sweep ARGUMENTS`.
+inline CommandResult sweep_command(const std::string& arguments) { return run_vascsim("sweep " + arguments); }
 
 // Writes DIR/NAME.json: scenes/maze_default.json with `axes` (a JSON object text) and
 // run.duration `duration` s, and returns its path. `extra` is added to the top-level object.

@@ -56,14 +56,10 @@ std::string maze_document(const Scene& scene) {
   doc["goal"] = io::to_json(env.goal);
   doc["walls"] = walls;
   doc["grid"] = grid_json(grid, cells);
-  doc["path"] = {{"solver", use_bfs ? "bfs" : "wall_follower"},
-                 {"corners", io::to_json(corners)},
-                 {"corner_radius", scene.path.corner_radius},
-                 {"length", trajectory.length()},
-                 {"speed", scene.path.speed},
-                 {"ramp_time", scene.path.ramp_time},
-                 {"duration", trajectory.duration()},
-                 {"samples", io::to_json(trajectory.sample(1e-4))}};
+  doc["path"] = io::route_timing_json(scene.path, trajectory);
+  doc["path"].update({{"solver", use_bfs ? "bfs" : "wall_follower"},
+                      {"corners", io::to_json(corners)},
+                      {"corner_radius", scene.path.corner_radius}});
   return doc.dump(1) + "\n";
 }
 

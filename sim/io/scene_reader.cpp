@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "sim/io/bounded_read.h"
+#include "sim/env/trajectory.h"
 #include "sim/io/scene_sections.h"
 #include "sim/scene/input_error.h"
 
@@ -129,6 +130,14 @@ json to_json(const Polyline& line) {
   json out = json::array();
   for (const auto& p : line) out.push_back(to_json(p));
   return out;
+}
+
+json route_timing_json(const PathSpec& path, const Trajectory& trajectory) {
+  return {{"length", trajectory.length()},
+          {"speed", path.speed},
+          {"ramp_time", path.ramp_time},
+          {"duration", trajectory.duration()},
+          {"samples", to_json(trajectory.sample(1e-4))}};
 }
 }  // namespace io
 

@@ -8,6 +8,10 @@
 #include "sim/io/json_fields.h"
 #include "sim/scene/scene.h"
 
+namespace vascsim {
+class Trajectory;
+}
+
 namespace vascsim::io {
 
 void read_maze(FieldReader& in, MazeSpec& out);
@@ -42,5 +46,8 @@ nlohmann::json write_solver(const SolverSpec& spec);
 
 nlohmann::json to_json(const Vec2& p);
 nlohmann::json to_json(const Polyline& line);  // [[x, y], ...]
+// The reference's timing and its points every 0.1 ms, as the maze and vessels documents give them
+// under "path": length, speed, ramp_time, duration and samples.
+nlohmann::json route_timing_json(const PathSpec& path, const Trajectory& trajectory);
 
 }  // namespace vascsim::io

@@ -67,15 +67,11 @@ std::string vessels_document(const Scene& scene) {
                    {"height", scene.vessels.mask.height}, {"pixel_size", scene.vessels.mask.pixel_size}};
   else
     doc["graph"] = graph_json(scene.vessels);
-  doc["path"] = {{"centreline", io::to_json(env.centreline)},
-                 {"radius", env.centreline_radius},
-                 {"corner_radius", env.corner_radius},
-                 {"narrowest_diameter", env.lumen_width},
-                 {"length", trajectory.length()},
-                 {"speed", scene.path.speed},
-                 {"ramp_time", scene.path.ramp_time},
-                 {"duration", trajectory.duration()},
-                 {"samples", io::to_json(trajectory.sample(1e-4))}};
+  doc["path"] = io::route_timing_json(scene.path, trajectory);
+  doc["path"].update({{"centreline", io::to_json(env.centreline)},
+                      {"radius", env.centreline_radius},
+                      {"corner_radius", env.corner_radius},
+                      {"narrowest_diameter", env.lumen_width}});
   return doc.dump(1) + "\n";
 }
 
