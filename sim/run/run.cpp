@@ -88,7 +88,9 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
   controls = controls_for_step(dt);
   if (navigation_ && navigation_->paper_walls) {
     // The paper's contact: re-solve the step with updated wall forces until no node is inside.
-    const State start = state_;
+    // Its start is copied into a member that keeps its storage.
+    State& start = paper_start_;
+    start = state_;
     int rejected = 0;  // over all the re-solves
     for (int k = 1;; ++k) {
       report = step(*model_, state_, workspace_, controls, dt, newton_stop());

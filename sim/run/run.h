@@ -150,6 +150,7 @@ class Run {
   State step_start_;                                 // error control: where the last step started, for frames inside it
   Controls step_start_controls_;                     // error control: the controls of the step that ended at step_start_
   State attempt_start_;                              // error control: where the step being tried started
+  State paper_start_;                                // paper contact: where the step being re-solved started
   struct SolvedForces {
     double t = 0.0;                         // s
     std::vector<Eigen::VectorXd> channels;  // by force_channels_ index, empty until evaluated; none: unused entry
