@@ -195,6 +195,9 @@ int run_run_command(int argc, char** argv) {
   warn("the static equilibrium is unstable (the Newton matrix has negative pivots)", s.warnings.unstable_equilibrium);
   warn("the load path reached an unstable equilibrium; the solve left it for a stable one (solver.stable_branch)",
        s.warnings.left_unstable);
+  warn("the static equilibrium's stability is not decided: the Newton matrix's eigenvalue nearest zero is within its "
+       "round-off at this many nodes (docs/solver.md, \"Limit: static solves of very fine meshes\")",
+       s.warnings.stability_undecided);
   if (!ok) {
     std::fprintf(stderr, "vascsim run: simulation failed: %s\n", s.failure.c_str());
     return 1;

@@ -52,7 +52,8 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                    {"step_over_tolerance", warning(s.warnings.step_over_tolerance)},
                    {"paper_contact_iteration_cap", warning(s.warnings.paper_contact_cap)},
                    {"unstable_equilibrium", warning(s.warnings.unstable_equilibrium)},
-                   {"left_unstable_equilibrium", warning(s.warnings.left_unstable)}};
+                   {"left_unstable_equilibrium", warning(s.warnings.left_unstable)},
+                   {"stability_undecided", warning(s.warnings.stability_undecided)}};
   const State& state = run.state();
   json positions = json::array(), velocities = json::array();
   for (Eigen::Index i = 0; i < state.x.size(); i += 2) {

@@ -48,6 +48,7 @@ struct RunWarnings {
   WarningCount paper_contact_cap;     // paper contact: steps that hit contact.paper_iterations unsettled
   WarningCount unstable_equilibrium;  // static mode: the equilibrium found is unstable
   WarningCount left_unstable;         // static mode: the load path's was, and the solve left it for a stable one
+  WarningCount stability_undecided;   // static mode: the stiffness's eigenvalue nearest zero is within its round-off
 };
 
 struct RunStatistics {

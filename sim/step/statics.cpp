@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "sim/step/banded_ldlt.h"
+#include "sim/step/stability_margin.h"
 #include "sim/step/stable_branch.h"
 #include "sim/step/stepper.h"
 
@@ -66,6 +67,17 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
       } else {
         report.branch_failure = b.failure;
       }
+    }
+    // The pivots' count is only as good as the sign of the eigenvalue nearest zero.
+    assemble(model, p, x, ws, true);
+    const BandedMatrix stiffness = ws.jacobian;
+    if (banded_block_ldlt_factor(ws.jacobian).ok) {
+      const StabilityMargin margin = stability_margin(stiffness, ws.jacobian, ws.fixed);
+      report.smallest_eigenvalue = margin.eigenvalue;
+      report.eigenvalue_round_off = margin.round_off;
+      report.stability_undecided = !margin.decided();
+    } else {
+      report.stability_undecided = true;
     }
   }
   state.x = x;

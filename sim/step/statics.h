@@ -29,6 +29,12 @@ struct StaticReport {
   int unstable_pivots = 0;
   bool left_unstable = false;
   std::string branch_failure;  // why it could not, when unstable_pivots > 0 and !left_unstable
+  // The eigenvalue of the Newton matrix nearest zero at the equilibrium returned (N/m, for a unit
+  // vector) and its round-off; when it is within that, the count of negative pivots, and with it
+  // the stability, is not decided (a very fine mesh: sim/step/stability_margin.h).
+  double smallest_eigenvalue = 0.0;
+  double eigenvalue_round_off = 0.0;
+  bool stability_undecided = false;
   std::string failure;
 };
 
