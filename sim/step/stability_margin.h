@@ -1,8 +1,8 @@
 // Whether a static equilibrium's stability can be decided in double precision at all. The count
 // of negative pivots (Sylvester's law of inertia) is only as good as the sign of the stiffness's
 // eigenvalue nearest zero, and that eigenvalue (~EI/L^3 over N for a unit vector) shrinks while
-// the round-off of the assembled matrix (~eps EI/dl^3) grows: past about 8000 nodes of the paper's
-// rod the two meet, and a column loaded past buckling counts as stable. Inverse iteration with the
+// the round-off of the assembled matrix (~eps EI/dl^3) grows: for the paper's rod they meet at
+// several thousand nodes, and at 10001 a column loaded past buckling counts as stable. Inverse iteration with the
 // factor finds that eigenvalue; its residual |K y - lambda y| tells how far the matrix as
 // assembled is from having it exactly, so a Rayleigh quotient no larger than that has no sign.
 #pragma once
