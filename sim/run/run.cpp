@@ -93,7 +93,7 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
     start = state_;
     int rejected = 0;  // over all the re-solves
     for (int k = 1;; ++k) {
-      report = step(*model_, state_, workspace_, controls, dt, newton_stop());
+      report = step(*model_, state_, workspace_, controls, dt, newton_stop(), k > 1 ? &paper_warm_start_ : nullptr);
       stats_.newton_iterations_all += report.total_iterations;
       rejected += report.rejected;
       if (!report.ok) break;
@@ -105,6 +105,8 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
         stats_.warnings.paper_contact_cap.note(t_start);
         break;
       }
+      paper_warm_start_.x = state_.x;  // the next re-solve starts where this one ended
+      paper_warm_start_.dt = report.dt;
       state_ = start;
       controls.wall_forces = wall_forces_;
     }

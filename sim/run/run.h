@@ -152,6 +152,7 @@ class Run {
   Controls step_start_controls_;                     // error control: the controls of the step that ended at step_start_
   State attempt_start_;                              // error control: where the step being tried started
   State paper_start_;                                // paper contact: where the step being re-solved started
+  NewtonWarmStart paper_warm_start_;                 // paper contact: where the last re-solve of the step ended
   struct SolvedForces {
     double t = 0.0;                         // s
     std::vector<Eigen::VectorXd> channels;  // by force_channels_ index, empty until evaluated; none: unused entry

@@ -26,7 +26,7 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 bool attempt(const Model& model, State& state, Workspace& ws, const Controls& controls, double h, const NewtonStopTolerance& stop,
-             StepReport& report) {
+             const NewtonWarmStart* warm, StepReport& report) {
   // Scheme coefficients (see stepper.h).
   double a1 = 1.0, a2 = 0.0, beta = 1.0;
   if (step_order(model.solver.scheme, state, h) == 2) {
@@ -64,7 +64,10 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
     for (std::size_t k = 0; k < model.forces.size(); ++k)
       alpha = std::min(alpha, model.forces[k]->max_step_fraction(module_context(ctx, ws, k), ws.dx));
   }
-  ws.x = state.x + alpha * ws.dx;
+  if (warm && warm->dt == h && warm->x.size() == ws.x.size())
+    ws.x = warm->x;
+  else
+    ws.x = state.x + alpha * ws.dx;
   for (std::size_t d = 0; d < ws.fixed.size(); ++d)
     if (ws.fixed[d]) ws.x[static_cast<Eigen::Index>(d)] = ws.target[static_cast<Eigen::Index>(d)];
 
@@ -111,17 +114,17 @@ int step_order(Scheme scheme, const State& state, double h) {
 StepReport step_once(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt,
                      const NewtonStopTolerance& stop) {
   StepReport report;
-  report.ok = attempt(model, state, ws, controls, dt, stop, report);
+  report.ok = attempt(model, state, ws, controls, dt, stop, nullptr, report);
   return report;
 }
 
 StepReport step(const Model& model, State& state, Workspace& ws, const Controls& controls, double dt,
-                const NewtonStopTolerance& stop) {
+                const NewtonStopTolerance& stop, const NewtonWarmStart* warm) {
   StepReport report;
   const int retries = model.solver.adaptive == StepControl::kOff ? 0 : model.solver.max_halvings;
   double h = dt;
   for (int k = 0; k <= retries; ++k, h *= 0.5) {
-    if (attempt(model, state, ws, controls, h, stop, report)) {
+    if (attempt(model, state, ws, controls, h, stop, warm, report)) {
       report.ok = true;
       return report;
     }
