@@ -66,8 +66,8 @@ struct Modes {
 class Traversal : public ::testing::TestWithParam<Modes> {};
 
 // 21 mazes; under the sanitizers the paper's contact, which re-solves each step up to 50 times
-// (a quarter of the sanitizer run's test time on 21 mazes), runs the first 7, seed 3 (force mode's
-// worst tracking error) among them.
+// (on 21 mazes, before its warm start, a quarter of the sanitizer run's test time), runs the
+// first 7.
 TEST_P(Traversal, ReachesTheGoalOnEachMaze) {
   const Modes m = GetParam();
   const int mazes = m.contact == ContactMode::kPaper ? test::sweep_size(21, 7) : 21;
