@@ -1,9 +1,10 @@
 // Static solves on fine meshes (issue 16 item 5a): a 2001-node cantilever, whose tip pivot in the
 // Newton matrix's LDL^T is ~1e-10 of the diagonal (EI/L^3 against EA/dl), must solve like a
 // 41-node one; so must a 10001-node one, whose residual's round-off (|K| |x| eps, K's bending
-// stiffness growing like N^3) is 1e-2 of the load early in the load ramp (docs/solver.md). References the code did not produce: docs/references.md section 1 (the elastica
-// table of Bisshopp & Drucker, Q. Appl. Math. 3:272, 1945, and Mattiasson, IJNME 17:145, 1981)
-// and section 8 (a dead tip moment bends the rod into a circular arc of angle phi = M L / EI).
+// stiffness growing like N^3) is 1e-2 of the load early in the load ramp (docs/solver.md).
+// References the code did not produce: docs/references.md section 1 (the elastica table of
+// Bisshopp & Drucker, Q. Appl. Math. 3:272, 1945, and Mattiasson, IJNME 17:145, 1981) and
+// section 8 (a dead tip moment bends the rod into a circular arc of angle phi = M L / EI).
 #include <gtest/gtest.h>
 
 #include <cmath>

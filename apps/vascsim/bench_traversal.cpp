@@ -57,8 +57,9 @@ int run_bench_traversal(int argc, char** argv) {
       }
     }
     std::printf("%-9s %9.2fs %8d %9lld %10lld %11.3f %9.1fx %8s %12.3f%s\n", preset, stats.simulated_time,
-                stats.steps, stats.newton_iterations, stats.newton_iterations_all, best, stats.simulated_time / best, stats.goal_reached ? "yes" : "NO",
-                1e3 * stats.tip_error_rms, stats.failed ? ("  FAILED: " + stats.failure).c_str() : "");
+                stats.steps, stats.newton_iterations, stats.newton_iterations_all, best, stats.simulated_time / best,
+                stats.goal_reached ? "yes" : "NO", 1e3 * stats.tip_error_rms,
+                stats.failed ? ("  FAILED: " + stats.failure).c_str() : "");
   }
   return 0;
 }

@@ -58,13 +58,6 @@ NewtonOutcome& round_off_stop(const Model& model, const NewtonProblem& p, Worksp
   return out;
 }
 
-// Error control's stop (NewtonProblem::correction_tol), CVODE's test: the next correction,
-// estimated with the factorisation of the last iterate's Jacobian (no new assembly), is within
-// the tolerance; it is then applied, as CVODE does, since stopping short of it leaves an error
-// of the same sign at every step (the iterates approach from the predictor's side), which adds
-// up over a run: on maze_body_drag at the fast preset, stopping there without it took the body
-// deviation from 0.17 to 0.53 mm, with it the deviation stays 0.17 mm (docs/solver.md).
-// Not if the correction would move a node too close to a wall: then Newton goes on as before.
 // The residual's round-off in a static solve: rounding the positions alone (|x| eps) changes the
 // forces by up to |K| |x| eps, and the bending stiffness EI/dl^3 in K grows like N^3. Without
 // inertia to bound the softest mode, that noise, not the tolerance, limits a fine mesh: the
@@ -74,11 +67,19 @@ NewtonOutcome& round_off_stop(const Model& model, const NewtonProblem& p, Worksp
 double residual_round_off(const BandedMatrix& k, const Eigen::VectorXd& x) {
   double diagonal = 0.0;
   for (int i = 0; i < k.size(); ++i) diagonal = std::max(diagonal, std::abs(k.lower(i, i)));
-  // A symmetric semi-definite row sums to at most (2 * 5 + 1) times its largest diagonal entry.
+  // A row of a semi-definite band sums to at most (2 * 5 + 1) times its largest diagonal entry
+  // (|K_ij| <= sqrt(K_ii K_jj)); an indefinite one near a buckling load is close to that.
   const double row_sum = (2 * BandedMatrix::kHalfBandwidth + 1) * diagonal;
   return row_sum * x.lpNorm<Eigen::Infinity>() * std::numeric_limits<double>::epsilon();
 }
 
+// Error control's stop (NewtonProblem::correction_tol), CVODE's test: the next correction,
+// estimated with the factorisation of the last iterate's Jacobian (no new assembly), is within
+// the tolerance; it is then applied, as CVODE does, since stopping short of it leaves an error
+// of the same sign at every step (the iterates approach from the predictor's side), which adds
+// up over a run: on maze_body_drag at the fast preset, stopping there without it took the body
+// deviation from 0.17 to 0.53 mm, with it the deviation stays 0.17 mm (docs/solver.md).
+// Not if the correction would move a node too close to a wall: then Newton goes on as before.
 bool correction_converges(const Model& model, const NewtonProblem& p, Workspace& ws) {
   ws.dx = -ws.residual;
   banded_block_ldlt_solve(ws.jacobian, ws.dx);

@@ -6,7 +6,8 @@
 
 namespace vascsim {
 
-StabilityMargin stability_margin(const BandedMatrix& stiffness, const BandedMatrix& factor, const std::vector<char>& fixed) {
+StabilityMargin stability_margin(const BandedMatrix& stiffness, const BandedMatrix& factor,
+                                 const std::vector<char>& fixed) {
   const int n = stiffness.size();
   // A fixed start that is not orthogonal to a smooth soft mode: alternating-sign vectors would be,
   // to first order, for a rod whose softest modes bend it.
