@@ -52,8 +52,15 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
   report.ok = lambda >= 1.0;
   if (report.ok) {
     p.load_scale = 1.0;
-    assemble(model, p, x, ws, true);
-    report.negative_pivots = banded_block_ldlt_factor(ws.jacobian).negative_pivots;
+    // The Newton matrix at x, kept as assembled (for the stability margin) and factored in ws.
+    BandedMatrix stiffness;
+    const auto factor_at = [&](const Eigen::VectorXd& at) {
+      assemble(model, p, at, ws, true);
+      stiffness = ws.jacobian;
+      return banded_block_ldlt_factor(ws.jacobian);
+    };
+    LdltResult factor = factor_at(x);
+    report.negative_pivots = factor.negative_pivots;
     if (report.negative_pivots > 0 && model.solver.stable_branch) {
       // Newton found a saddle of the energy (a column kept straight past buckling): leave it.
       report.unstable_pivots = report.negative_pivots;
@@ -67,11 +74,10 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
       } else {
         report.branch_failure = b.failure;
       }
+      factor = factor_at(x);  // the branch search used ws's matrix
     }
     // The pivots' count is only as good as the sign of the eigenvalue nearest zero.
-    assemble(model, p, x, ws, true);
-    const BandedMatrix stiffness = ws.jacobian;
-    if (banded_block_ldlt_factor(ws.jacobian).ok) {
+    if (factor.ok) {
       const StabilityMargin margin = stability_margin(stiffness, ws.jacobian, ws.fixed);
       report.smallest_eigenvalue = margin.eigenvalue;
       report.eigenvalue_round_off = margin.round_off;
