@@ -9,6 +9,10 @@
 #include "render/png_writer.h"
 #include "render/render_run.h"
 #include "render_test_util.h"
+#include "sim/io/run_log.h"
+#include "sim/io/scene_reader.h"
+#include "sim/run/compile.h"
+#include "sim/run/run.h"
 
 namespace vascsim::render {
 namespace {
@@ -51,6 +55,41 @@ TEST(RenderGolden, FitFrameOfARingVessel) {
   ScratchDir dir("golden_vessel");
   expect_frame_matches(dir, testing::write_log(dir, "ring", testing::annulus_metadata()), 0.5, "frame_vessel_320x240.png");
 }
+
+// A shipped vessel scene's network as the simulator compiles it (junctions and Murray's-law
+// radii, an aneurysm's sac on a bend, a lumen traced from an image mask), with the synthetic rod
+// sliding 0.2 m along its route: a change to the vessel geometry or to how it is drawn shows here.
+// Provenance is cleared, so a new commit alone does not change the frame.
+std::string write_shipped_vessel_log(const ScratchDir& dir, const std::string& scene_name) {
+  const Scene scene = read_scene_file(std::string(VASCSIM_SOURCE_DIR) + "/scenes/" + scene_name + ".json");
+  const Run run(compile(scene));
+  LogMetadata m = run_log_metadata(run);
+  m.scene_json.clear();
+  m.vascsim_version.clear();
+  m.commit.clear();
+  m.scene_hash.clear();
+  SyntheticLogSpec spec;
+  spec.nodes = scene.rod.nodes;
+  spec.rod_length = scene.rod.length;
+  spec.rod_radius = scene.rod.outer_radius;
+  spec.cell = m.lumen_width;
+  spec.speed = 0.2;
+  spec.contact_nodes = {scene.rod.nodes / 4, scene.rod.nodes / 2};
+  const std::string path = dir / (scene_name + ".vlog");
+  write_synthetic_log(path, spec, m);
+  return path;
+}
+
+class ShippedVesselGolden : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ShippedVesselGolden, FitFrameMatches) {
+  const std::string name = GetParam();
+  ScratchDir dir("golden_" + name);
+  expect_frame_matches(dir, write_shipped_vessel_log(dir, name), 1.0, "frame_" + name + "_320x240.png");
+}
+
+INSTANTIATE_TEST_SUITE_P(RenderGolden, ShippedVesselGolden, ::testing::Values("vessel_tree", "aneurysm", "vessel_mask"),
+                         [](const auto& info) { return std::string(info.param); });
 
 TEST(RenderGolden, TipTrajectoryPlot) {
   ScratchDir dir("golden_plot");
