@@ -53,13 +53,20 @@ class FrameLog:
                 layout_code, values = struct.unpack("<BI", self._exact(f, 5))
                 if layout_code not in LAYOUTS:
                     raise ValueError("%s: channel %r has unknown layout %d" % (path, name, layout_code))
+                expected = {0: max(values, 1), 1: 2 * self.node_count, 2: 2}[layout_code]
+                if values != expected:
+                    raise ValueError("%s: channel %r holds %d values per frame, expected %d"
+                                     % (path, name, values, expected))
                 self.channels.append(Channel(name, unit, LAYOUTS[layout_code], values, offset))
                 offset += values
             (length,) = struct.unpack("<I", self._exact(f, 4))
             if length > 32 << 20:
                 raise ValueError("%s: metadata of %d bytes claimed (at most 32 MB)" % (path, length))
-            text = self._exact(f, length).decode("utf-8")
-            self.metadata = json.loads(text) if text else {}
+            try:
+                text = self._exact(f, length).decode("utf-8")
+                self.metadata = json.loads(text) if text else {}
+            except (UnicodeDecodeError, json.JSONDecodeError) as e:
+                raise ValueError("%s: corrupt metadata (%s)" % (path, e)) from e
             self.data_offset = (f.tell() + 7) // 8 * 8
         self.record_doubles = offset
         self._records = None
@@ -75,7 +82,10 @@ class FrameLog:
         (n,) = struct.unpack("<I", self._exact(f, 4))
         if n > 1024:
             raise ValueError("%s: a channel name or unit of %d bytes (at most 1024)" % (self.path, n))
-        return self._exact(f, n).decode("utf-8")
+        try:
+            return self._exact(f, n).decode("utf-8")
+        except UnicodeDecodeError as e:
+            raise ValueError("%s: a channel name or unit that is not UTF-8 (%s)" % (self.path, e)) from e
 
     def refresh(self):
         """Maps the complete records in the file now (a growing log gains frames)."""

@@ -22,20 +22,6 @@ double FrameState::max_contact() const {
 
 namespace {
 
-// Every channel's value count must match its layout, so no reader of a record can run past the
-// values it was told are there (a corrupt or hand-made log must fail here, not in the painter).
-void check_channel_counts(const FrameLogHeader& h, const std::string& path) {
-  for (const LogChannel& c : h.channels) {
-    const std::uint32_t expected = c.layout == ChannelLayout::kNodeVectors ? 2 * h.node_count
-                                   : c.layout == ChannelLayout::kVector    ? 2u
-                                                                           : std::max<std::uint32_t>(c.count, 1);
-    if (c.count != expected)
-      throw InputError(path + ": channel '" + c.name.substr(0, 64) + "' holds " + std::to_string(c.count) +
-                       " values per frame, expected " + std::to_string(expected) +
-                       (c.layout == ChannelLayout::kNodeVectors ? " (2 per node)" : ""));
-  }
-}
-
 int require_layout(const FrameLogHeader& h, const char* name, ChannelLayout layout, const std::string& path) {
   const int index = h.find_channel(name);
   if (index >= 0 && h.channels[static_cast<std::size_t>(index)].layout != layout)
@@ -51,7 +37,6 @@ FrameSource::FrameSource(const std::string& run_path) : log_path_(frame_log_path
   position_ = require_layout(h, channel::kPosition, ChannelLayout::kNodeVectors, log_path_);
   if (position_ < 0) throw InputError(log_path_ + ": frame log has no 'position' channel");
   if (h.node_count < 2) throw InputError(log_path_ + ": frame log rod has fewer than 2 nodes");
-  check_channel_counts(h, log_path_);
   actuation_ = require_layout(h, channel::kActuationForce, ChannelLayout::kNodeVectors, log_path_);
   contact_ = require_layout(h, channel::kContactForce, ChannelLayout::kNodeVectors, log_path_);
   friction_ = require_layout(h, channel::kFrictionForce, ChannelLayout::kNodeVectors, log_path_);
@@ -63,6 +48,11 @@ FrameSource::FrameSource(const std::string& run_path) : log_path_(frame_log_path
   first_time_ = checked_time(0);
   last_time_ = checked_time(frame_count_ - 1);
   if (last_time_ < first_time_) throw bad_time(frame_count_ - 1, last_time_, "before the first frame's time");
+}
+
+std::vector<std::string> FrameSource::run_files() const {
+  const std::filesystem::path dir = std::filesystem::path(log_path_).parent_path();
+  return {log_path_, (dir / "summary.json").string(), (dir / "scene.json").string(), (dir / "bookmarks.json").string()};
 }
 
 bool FrameSource::refresh() {
@@ -84,13 +74,11 @@ void FrameSource::check_times(std::size_t end) const {
 }
 
 void FrameSource::check_frame_time(std::size_t i, double t, double previous) const {
-  if (!std::isfinite(t) || t < 0) throw bad_time(i, t, "not a finite time >= 0");
-  if (i > 0 && t < previous) throw bad_time(i, t, "before the previous frame's time");
+  vascsim::check_frame_time(log_path_, i, t, previous);
 }
 
 InputError FrameSource::bad_time(std::size_t i, double t, const char* why) const {
-  return InputError(log_path_ + ": frame " + std::to_string(i) + " has time " + std::to_string(t) +
-                    " s, " + why + " (times must be finite, >= 0 and non-decreasing)");
+  return bad_frame_time(log_path_, i, t, why);
 }
 
 double FrameSource::checked_time(std::size_t i) const {

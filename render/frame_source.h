@@ -44,6 +44,9 @@ class FrameSource {
   explicit FrameSource(const std::string& run_path);
 
   const std::string& log_path() const { return log_path_; }
+  // The log and the run's files beside it (summary.json, scene.json, bookmarks.json): what an
+  // output never replaces, even with --force.
+  std::vector<std::string> run_files() const;
   const LogMetadata& metadata() const { return metadata_; }
   std::size_t frame_count() const { return frame_count_; }
   double first_time() const { return first_time_; }

@@ -50,6 +50,23 @@ TEST(ExportCommand, WritesChosenChannelsTimesAndFrames) {
   r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv --force");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(lines_of(read_text(dir + "/csv/position.csv")).size(), 1u + 51u * 50u);
+  EXPECT_EQ(r.output.find("warning"), std::string::npos) << "a finished run: " << r.output;
+
+  // Asking for nothing the log holds is an error, not header-only files.
+  for (const std::string& options : {std::string("--from 5 --to 6"), std::string("--channels ''"),
+                                     std::string("--channels tip/error,tip/error"), std::string("--to 1 --to 2")}) {
+    r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv --force " + options);
+    EXPECT_EQ(r.exit_code, 2) << options << ": " << r.output;
+  }
+  EXPECT_NE(run_vascsim("export " + dir + "/run --csv " + dir + "/csv --force --from 5 --to 6")
+                .output.find("no frame in the time range [5, 6] s (the log spans 0 .. 1 s)"),
+            std::string::npos);
+
+  // A run without its summary (stopped, or still running) exports what it has, with a warning.
+  std::filesystem::remove(dir + "/run/summary.json");
+  r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv --force");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("has no summary.json: the run was stopped or is still being written"), std::string::npos) << r.output;
   std::filesystem::remove_all(dir);
 }
 

@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <set>
 #include <sstream>
 
 #include "apps/vascsim/cli_args.h"
@@ -48,13 +49,21 @@ int run_export_command(int argc, char** argv) {
   const auto dir = args.value("csv");
   if (!dir) throw UsageError("--csv DIR is required");
   CsvExportOptions options;
-  if (auto c = args.value("channels")) options.channels = split(*c);
+  if (auto c = args.value("channels")) {
+    options.channels = split(*c);
+    if (options.channels.empty()) throw UsageError("--channels: expected a comma-separated list of channel names, got '" + *c + "'");
+    std::set<std::string> seen;
+    for (const std::string& name : options.channels)
+      if (!seen.insert(name).second) throw UsageError("--channels: '" + name + "' is listed twice");
+  }
   options.from = args.number("from", options.from, -1e300, 1e300);
   options.to = args.number("to", options.to, -1e300, 1e300);
   if (options.to < options.from) throw UsageError("--to must not be before --from");
   options.every = static_cast<std::size_t>(args.integer("every", 1, 1, 1000000000));
   options.overwrite = args.flag("force");
   const FrameLogReader log(frame_log_path(args.positional().front()));
+  if (const std::string warning = incomplete_run_warning(args.positional().front()); !warning.empty())
+    std::fprintf(stderr, "%s\n", warning.c_str());
   const auto files = export_csv(log, *dir, options);
   std::printf("wrote %zu CSV file%s to %s\n", files.size(), files.size() == 1 ? "" : "s", dir->c_str());
   return 0;

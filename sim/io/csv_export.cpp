@@ -18,6 +18,12 @@ void put(std::string& out, double v) {
   out += text;
 }
 
+std::string seconds(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", t);
+  return text;
+}
+
 std::string header_of(const LogChannel& c) {
   const std::string u = " [" + c.unit + "]";
   switch (c.layout) {
@@ -59,14 +65,22 @@ std::vector<std::string> export_csv(const FrameLogReader& log, const std::string
     check_replaceable_output(paths.back(), options.overwrite, {log.path()});
   }
 
-  // The frames kept: by time, then every k-th.
+  // The frames kept: by time, then every k-th. Every frame's time is checked on the way, so a
+  // corrupt log fails here rather than as a table with a time out of order.
   std::vector<std::size_t> frames;
   const std::size_t n = log.frame_count();
+  if (n == 0) throw InputError(log.path() + ": frame log has no complete frame");
+  double previous = 0.0;
   for (std::size_t f = 0, kept = 0; f < n; ++f) {
     const double t = log.time_of(f);
+    check_frame_time(log.path(), f, t, previous);
+    previous = t;
     if (t < options.from || t > options.to) continue;
     if (kept++ % std::max<std::size_t>(1, options.every) == 0) frames.push_back(f);
   }
+  if (frames.empty())
+    throw InputError(log.path() + ": no frame in the time range [" + seconds(options.from) + ", " + seconds(options.to) +
+                     "] s (the log spans " + seconds(log.time_of(0)) + " .. " + seconds(previous) + " s)");
 
   std::vector<std::size_t> offset(channels.size(), 1);  // in doubles, after the time
   for (std::size_t i = 1; i < channels.size(); ++i) offset[i] = offset[i - 1] + channels[i - 1].count;

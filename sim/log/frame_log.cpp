@@ -1,5 +1,7 @@
 #include "sim/log/frame_log.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -145,6 +147,23 @@ void FrameLogWriter::close() {
   if (!ok) throw InputError(path_ + ": cannot close frame log (" + std::strerror(errno) + ")");
 }
 
+std::string incomplete_run_warning(const std::string& run_path) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(run_path, ec) || std::filesystem::exists(std::filesystem::path(run_path) / "summary.json", ec))
+    return "";
+  return "warning: " + run_path + " has no summary.json: the run was stopped or is still being written, so its log may end early";
+}
+
+InputError bad_frame_time(const std::string& path, std::size_t i, double t, const char* why) {
+  return InputError(path + ": frame " + std::to_string(i) + " has time " + std::to_string(t) + " s, " + why +
+                    " (times must be finite, >= 0 and non-decreasing)");
+}
+
+void check_frame_time(const std::string& path, std::size_t i, double t, double previous) {
+  if (!std::isfinite(t) || t < 0) throw bad_frame_time(path, i, t, "not a finite time >= 0");
+  if (i > 0 && t < previous) throw bad_frame_time(path, i, t, "before the previous frame's time");
+}
+
 FrameLogReader::FrameLogReader(const std::string& path) : path_(path) {
   file_ = std::fopen(path.c_str(), "rb");
   if (!file_) throw InputError(path + ": cannot open frame log (" + std::strerror(errno) + ")");
@@ -179,6 +198,13 @@ void FrameLogReader::read_header() {
     if (layout > 2) throw InputError(path + ": corrupt frame log header (channel layout)");
     c.layout = static_cast<ChannelLayout>(layout);
     c.count = in.u32();
+    const std::uint32_t expected = c.layout == ChannelLayout::kNodeVectors ? 2 * header_.node_count
+                                   : c.layout == ChannelLayout::kVector    ? 2u
+                                                                           : std::max<std::uint32_t>(c.count, 1);
+    if (c.count != expected)
+      throw InputError(path + ": channel '" + c.name.substr(0, 64) + "' holds " + std::to_string(c.count) +
+                       " values per frame, expected " + std::to_string(expected) +
+                       (c.layout == ChannelLayout::kNodeVectors ? " (2 per node)" : ""));
     header_.channels.push_back(c);
   }
   const std::uint32_t metadata_bytes = in.u32();

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/scene/input_error.h"
+
 namespace vascsim {
 
 // How a channel's values are laid out; tells a reader (and the renderer) how to interpret them.
@@ -74,12 +76,25 @@ class FrameLogWriter {
 // The frame log of a run: RUN_DIR/frames.vlog for a directory, the path itself for a file.
 // Throws InputError if neither exists.
 std::string frame_log_path(const std::string& run_path);
+// For a run directory without summary.json (written last, when a run ends, whether it reached
+// its end or diverged): a warning that the run was stopped or is still being written, so its log
+// may end early. Empty for a finished run and for a log file named directly.
+std::string incomplete_run_warning(const std::string& run_path);
+
+// The one rule for a frame's time (docs/frame-log.md, "Checked times"): finite, >= 0 and not
+// before the previous frame's (`previous`, s; ignored for frame 0). Throws InputError naming the
+// log `path` and frame i.
+void check_frame_time(const std::string& path, std::size_t i, double t, double previous);
+// The error for frame i of log `path` whose time t breaks that rule, saying `why`.
+InputError bad_frame_time(const std::string& path, std::size_t i, double t, const char* why);
 
 // Random access to a log's frames. Reads only the header on opening.
 class FrameLogReader {
  public:
-  // Throws InputError naming the file if it is missing, not a frame log, of an unknown version
-  // or has a truncated header.
+  // Throws InputError naming the file if it is missing, not a frame log, of an unknown version,
+  // has a truncated header, or a channel whose value count does not match its layout (2 per node
+  // for node vectors, 2 for a vector, at least 1 for scalars), so no reader of a record runs past
+  // the values it was told are there.
   explicit FrameLogReader(const std::string& path);
   ~FrameLogReader();
   FrameLogReader(const FrameLogReader&) = delete;

@@ -1,7 +1,7 @@
 """The Python frame-log reader (python/vascsim_log.py) against the C++ reader on a real run: every
 channel of every frame, as `vascsim export --csv` (the C++ FrameLogReader) writes them with 17
 significant digits, must equal the memory-mapped arrays exactly. Also: a run directory or file
-opens, a torn last record is ignored, another format version is refused.
+opens, a torn last record is ignored, another format version and a wrong channel count are refused.
 Usage: log_reader_test.py VASCSIM_EXE SOURCE_DIR WORK_DIR"""
 import csv
 import os
@@ -66,4 +66,22 @@ try:
     raise AssertionError("a version 2 log was read")
 except ValueError as e:
     assert "format version 2; this reader reads version 1" in str(e), e
+# A channel whose value count does not match its layout (the first channel, position: 2 per
+# node) is refused by name, by this reader and by the C++ one behind `vascsim export`.
+name_length = int.from_bytes(data[20:24], "little")
+unit_at = 24 + name_length
+count_at = unit_at + 4 + int.from_bytes(data[unit_at:unit_at + 4], "little") + 1
+assert int.from_bytes(data[count_at:count_at + 4], "little") == 2 * log.node_count
+bad_count = os.path.join(work, "bad_count.vlog")
+with open(bad_count, "wb") as f:
+    f.write(data[:count_at] + (2 * log.node_count - 1).to_bytes(4, "little") + data[count_at + 4:])
+try:
+    vascsim_log.open_log(bad_count)
+    raise AssertionError("a log with a wrong channel count was read")
+except ValueError as e:
+    assert "bad_count.vlog: channel 'position' holds %d values per frame, expected %d" % (
+        2 * log.node_count - 1, 2 * log.node_count) in str(e), e
+export = subprocess.run([exe, "export", bad_count, "--csv", csv_dir, "--force"], capture_output=True, text=True)
+assert export.returncode == 2 and "bad_count.vlog: channel 'position' holds" in export.stderr, export
+
 print("python reader agrees with the C++ reader on %d channels x %d frames" % (len(log.channels), log.frame_count))
