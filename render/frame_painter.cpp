@@ -178,6 +178,10 @@ FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const 
   map_y1_ = static_cast<float>(legend && !side_panel_ ? h - band_height() : h);
   // The panel needs about 15 characters of width whatever the frame size.
   map_x1_ = static_cast<float>(side_panel_ ? std::round(w - std::max(0.28 * w, 15.0 * font_px_)) : w);
+  // In a frame too small for the panel or the bands beside the map (a thumbnail), the map takes
+  // the whole frame under them rather than a sliver, or none: a negative width flipped the map.
+  if (map_x1_ - map_x0_ < 0.3 * w) map_x1_ = static_cast<float>(w);
+  if (map_y1_ - map_y0_ < 0.3 * h) map_y0_ = 0.0f, map_y1_ = static_cast<float>(h);
   const Vec2 size = world_.max - world_.min;
   scale_ = 0.94 * std::min((map_x1_ - map_x0_) / size.x(), (map_y1_ - map_y0_) / size.y()) * view.zoom;
 }

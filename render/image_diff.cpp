@@ -15,11 +15,20 @@ namespace vascsim::render {
 // The strict reading (container checks, stb_image) is sim/io/png_file.h's, shared with the
 // scene reader's vessel masks.
 Image load_png(const std::string& path) {
-  io::PngPixels p = io::read_png(path, 3);
+  const io::PngPixels p = io::read_png(path, 4);
   Image img;
   img.width = p.width;
   img.height = p.height;
-  img.rgb = std::move(p.data);
+  const std::size_t pixels = static_cast<std::size_t>(p.width) * p.height;
+  img.rgb.resize(3 * pixels);
+  img.alpha.resize(pixels);
+  bool opaque = true;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    for (int k = 0; k < 3; ++k) img.rgb[3 * i + k] = p.data[4 * i + k];
+    img.alpha[i] = p.data[4 * i + 3];
+    opaque = opaque && img.alpha[i] == 255;
+  }
+  if (opaque) img.alpha.clear();
   return img;
 }
 
@@ -34,11 +43,15 @@ DiffStats diff_images(const Image& a, const Image& b, int tolerance, Image* heat
     heat_map->height = a.height;
     heat_map->rgb.assign(a.rgb.size(), 0);
   }
+  // Alpha counts as a fourth channel when either image has any pixel not opaque (once it was
+  // dropped on reading, and a half-transparent picture compared equal to its opaque original).
+  const int channels = a.alpha.empty() && b.alpha.empty() ? 3 : 4;
+  const auto alpha = [](const Image& i, long p) { return i.alpha.empty() ? 255 : int(i.alpha[static_cast<std::size_t>(p)]); };
   double sum = 0, sum_sq = 0;
   for (long p = 0; p < s.pixels; ++p) {
     int worst = 0;
-    for (int k = 0; k < 3; ++k) {
-      const int d = std::abs(int(a.rgb[3 * p + k]) - int(b.rgb[3 * p + k]));
+    for (int k = 0; k < channels; ++k) {
+      const int d = k < 3 ? std::abs(int(a.rgb[3 * p + k]) - int(b.rgb[3 * p + k])) : std::abs(alpha(a, p) - alpha(b, p));
       worst = std::max(worst, d);
       sum += d;
       sum_sq += double(d) * d;
@@ -59,7 +72,7 @@ DiffStats diff_images(const Image& a, const Image& b, int tolerance, Image* heat
       }
     }
   }
-  const double n = 3.0 * static_cast<double>(s.pixels);
+  const double n = channels * static_cast<double>(s.pixels);
   s.mean_difference = n > 0 ? sum / n : 0;
   const double mse = n > 0 ? sum_sq / n : 0;
   s.psnr_db = mse > 0 ? 10 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();

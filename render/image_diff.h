@@ -1,5 +1,6 @@
 // Image comparison for golden-image tests and `vascsim diff`: per-channel absolute differences
-// of two PNGs of the same size (RGB; alpha ignored), summarised as max, mean, the count of
+// of two PNGs of the same size (RGB, and alpha where either image has any pixel not opaque),
+// summarised as max, mean, the count of
 // pixels whose largest channel difference exceeds a tolerance, and PSNR, plus a heat map.
 #pragma once
 
@@ -11,7 +12,8 @@ namespace vascsim::render {
 
 struct Image {
   int width = 0, height = 0;
-  std::vector<std::uint8_t> rgb;  // top-down rows, 3 bytes per pixel
+  std::vector<std::uint8_t> rgb;    // top-down rows, 3 bytes per pixel
+  std::vector<std::uint8_t> alpha;  // 1 byte per pixel; empty when every pixel is opaque
 };
 
 // Throws InputError naming the file if it is missing, not a regular file, over 256 MB, not a

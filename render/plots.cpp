@@ -9,6 +9,7 @@
 #include "render/number_format.h"
 #include "render/palette.h"
 #include "render/png_writer.h"
+#include "sim/io/output_file.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -235,8 +236,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   // Refuse before drawing anything, so a refusal leaves the directory as it was.
   for (const char* name : {"tip_trajectory.png", "actuation_force.png", "snapshots.png", "tracking_error.png",
                            "contact_force.png"})
-    if (fs::exists(fs::path(dir) / name, ec) && !force)
-      throw InputError((fs::path(dir) / name).string() + ": exists (use --force to overwrite)");
+    check_replaceable_output((fs::path(dir) / name).string(), force, source.run_files());
   const Series s = collect(source);
   const LogMetadata& m = source.metadata();
   std::vector<std::string> written;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -35,11 +36,20 @@ void validate_render_options(const RenderOptions& o) {
   if (o.from && o.to && *o.from > *o.to) throw InputError("time range: --from must not be after --to");
   if (o.still && !std::isfinite(*o.still)) throw InputError("still: expected a finite time");
   if (o.still && o.png_path.empty()) throw InputError("--still needs --png FILE");
+  if (o.still && (!o.mp4_path.empty() || !o.png_dir.empty() || !o.plots_dir.empty()))
+    throw InputError("--still T --png FILE writes one picture; --mp4, --png-dir and --plots render a time range (without --still)");
   if (!o.still && !o.png_path.empty()) throw InputError("--png FILE needs --still T (for a sequence use --png-dir)");
-  if (!o.still && !o.overlay_run.empty()) throw InputError("--overlay is for a still (--still T --png FILE)");
+  if (!o.overlay_run.empty() && !o.still && o.mp4_path.empty() && o.png_dir.empty())
+    throw InputError("--overlay draws over a still (--still T --png FILE) or a video (--mp4, --png-dir), not --plots");
 }
 
 namespace {
+
+std::string seconds(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", t);
+  return text;
+}
 
 // A frame over the canvas's limits (Canvas::kMaxShapes: a log whose path, walls or lumen has
 // millions of points) is drawn incomplete; the report says so rather than nothing.
@@ -53,7 +63,7 @@ std::string dropped_note(const Canvas& canvas) {
 // `vascsim render RUN --still T --png FILE`: one view, the same pixels the replay server sends.
 RenderReport render_still(const FrameSource& source, const RenderOptions& o) {
   std::error_code ec;
-  if (fs::exists(o.png_path, ec) && !o.force) throw InputError(o.png_path + ": exists (use --force to overwrite)");
+  check_replaceable_output(o.png_path, o.force, source.run_files());
   remove_stale_temporaries(fs::path(o.png_path).parent_path().string());
   std::unique_ptr<FrameSource> overlay;
   if (!o.overlay_run.empty()) overlay = std::make_unique<FrameSource>(o.overlay_run);
@@ -114,6 +124,14 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   RenderOptions o = options_in;
   validate_render_options(o);
   FrameSource source(run_dir);
+  // Every frame's time, once: a log with a frame out of order must fail, not render a range
+  // that its first and last frames alone make look right.
+  source.check_times(source.frame_count());
+  const auto outside = [&](double t) { return t < source.first_time() || t > source.last_time(); };
+  const std::string span = " (the log spans " + seconds(source.first_time()) + " .. " + seconds(source.last_time()) + " s)";
+  if (o.still && outside(*o.still)) throw InputError("--still " + seconds(*o.still) + ": no frame at that time" + span);
+  if ((o.from && *o.from > source.last_time()) || (o.to && *o.to < source.first_time()))
+    throw InputError("--from/--to: no frame in the time range" + span);
   if (o.still) return render_still(source, o);
   if (o.mp4_path.empty() && o.png_dir.empty() && o.plots_dir.empty()) {
     std::error_code ec;
@@ -127,8 +145,7 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
 
   // Refuse to overwrite before doing any work.
   std::error_code ec;
-  if (!o.mp4_path.empty() && fs::exists(o.mp4_path, ec) && !o.force)
-    throw InputError(o.mp4_path + ": exists (use --force to overwrite)");
+  if (!o.mp4_path.empty()) check_replaceable_output(o.mp4_path, o.force, source.run_files());
   // What a killed render left here under temporary names goes first (sim/io/output_file.h).
   if (!o.mp4_path.empty()) remove_stale_temporaries(fs::path(o.mp4_path).parent_path().string());
   if (!o.png_dir.empty()) {
@@ -156,10 +173,13 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   std::unique_ptr<VideoEncoder> video;
   if (!o.mp4_path.empty()) {
     video = std::make_unique<VideoEncoder>(o.mp4_path, VideoSettings{view.width, view.height, o.fps, 20});
-    if (fs::exists(video->path(), ec) && !o.force) throw InputError(video->path() + ": exists (use --force to overwrite)");
+    check_replaceable_output(video->path(), o.force, source.run_files());
   }
 
-  FrameState state;
+  // Compare: run B's rod at each frame's time (clamped to its own range), over this run's map.
+  std::unique_ptr<FrameSource> overlay;
+  if (!o.overlay_run.empty()) overlay = std::make_unique<FrameSource>(o.overlay_run);
+  FrameState state, overlay_state;
   source.frame(0, state);
   const ForceScales scales = choose_force_scales(source, view);
   FramePainter painter(source.metadata(), view, scales, state);
@@ -202,7 +222,8 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
     const double t = t0 + static_cast<double>(k) * o.speed / o.fps;
     source.at_time(t, state);
     trail.advance(frames_through(source, t), tip_of);
-    painter.paint(canvas, state, trail.points(state.tip()));
+    if (overlay) overlay->at_time(t, overlay_state);
+    painter.paint(canvas, state, trail.points(state.tip()), overlay ? &overlay_state : nullptr);
     canvas.finish(pipeline.acquire().data());
     pipeline.submit(k);
     if (o.progress && !o.progress(k + 1, count)) throw InputError("render cancelled");

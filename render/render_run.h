@@ -22,7 +22,7 @@ struct RenderOptions {
   std::string plots_dir;  // tip_trajectory.png, actuation_force.png, snapshots.png, ...
   std::optional<double> still;  // s: render only the view at this time, to png_path
   std::string png_path;         // the still's PNG file
-  std::string overlay_run;      // compare: this run's rod drawn over the map (a still only)
+  std::string overlay_run;      // compare: this run's rod drawn over the map (a still or a video)
   View view;              // size, camera, layers, arrow scales
   int fps = 30;           // video frames per second
   double speed = 1.0;     // simulated seconds per video second

@@ -56,6 +56,28 @@ TEST(RenderCamera, FitShowsEveryThickOuterWallAtEveryFrameSize) {
   }
 }
 
+// Thumbnails: at 100x100 and 16x16 the panel's card and bands were taller than the frame, the map
+// got a negative height and was drawn mirrored out of sight. The map must keep a positive scale
+// and the whole maze in the frame.
+TEST(RenderCamera, TinyFramesStillShowTheMap) {
+  const LogMetadata meta = boxed_maze();
+  FrameState frame;
+  frame.position = {0.4, 0.5, 0.5, 0.5, 0.6, 0.5};
+  const int sizes[][2] = {{100, 100}, {16, 16}, {40, 16}, {160, 100}};
+  for (const auto& size : sizes) {
+    View view;
+    view.width = size[0];
+    view.height = size[1];
+    FramePainter painter(meta, view, ForceScales{}, frame);
+    EXPECT_GT(painter.pixels_per_metre(), 0.0) << view.width << "x" << view.height;
+    for (const Vec2& corner : {Vec2(0, 0), Vec2(1, 1)}) {
+      const glm::dvec2 p = painter.to_pixel(frame, corner);
+      EXPECT_TRUE(p.x >= 0 && p.x <= view.width && p.y >= 0 && p.y <= view.height)
+          << view.width << "x" << view.height << ": corner (" << corner.x() << ", " << corner.y() << ") at " << p.x << ", " << p.y;
+    }
+  }
+}
+
 // Frames without a side panel still explain the arrows: a band below the map carries the two
 // force arrows of the legend, and nothing of them lies on the map.
 TEST(RenderCamera, NarrowFramesShowTheArrowLegendBelowTheMap) {

@@ -4,8 +4,12 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <fstream>
+
 #include "render/image_diff.h"
 #include "render/png_writer.h"
+#define STBI_WRITE_NO_STDIO
+#include <stb/stb_image_write.h>
 #include "render_test_util.h"
 
 namespace vascsim::render {
@@ -131,6 +135,18 @@ TEST(DiffCli, ExitCodesAndHeatMap) {
   write_image_png(dir / "c.png", c);
   EXPECT_EQ(run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "c.png") + "'", dir).exit_code, 2);
   EXPECT_EQ(run_vascsim("diff '" + (dir / "a.png") + "' --tolerance x", dir).exit_code, 2);
+
+  // The same colours half transparent differ from the opaque original (alpha was dropped).
+  // (Written with stb's RGBA encoder: vascsim's own PNGs are opaque RGB.)
+  std::vector<std::uint8_t> rgba(8 * 4 * 4, 200);
+  for (std::size_t p = 0; p < 32; ++p) rgba[4 * p + 3] = 128;
+  std::string half;
+  stbi_write_png_to_func([](void* out, void* data, int size) { static_cast<std::string*>(out)->append(static_cast<char*>(data), size); },
+                         &half, 8, 4, 4, rgba.data(), 8 * 4);
+  std::ofstream(dir / "half.png", std::ios::binary) << half;
+  r = run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "half.png") + "'", dir);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("max difference  127"), std::string::npos) << r.out;
 }
 
 // --out follows the rules of every other output: no existing file replaced without --force, and

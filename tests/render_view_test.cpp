@@ -90,6 +90,24 @@ TEST(RenderView, StillAtTIsTheVideoFrameAtT) {
   r = testing::run_vascsim("render " + run + " --still 1.0 --png " + (dir / "still.png"), dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("exists"), std::string::npos) << r.err;
+
+  // The same with a second run overlaid (compare mode's pixels, the replay's overlay export): a
+  // shorter run B, held at its own end (1 s) while this run goes on.
+  SyntheticLogSpec short_spec = spec;
+  short_spec.frames = 11;
+  short_spec.duration = 1;
+  short_spec.speed = 0.012;
+  const std::string run_b = testing::make_run(dir, short_spec, "b");
+  r = testing::run_vascsim("render " + run + " --png-dir " + (dir / "seq_b") +
+                               " --from 0.5 --to 1.5 --fps 10 --width 320 --height 240 --hide hud --overlay " + run_b,
+                           dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = testing::run_vascsim("render " + run + " --still 1.2 --png " + (dir / "still_b.png") +
+                               " --width 320 --height 240 --hide hud --overlay " + run_b,
+                           dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(testing::read_bytes(dir / "still_b.png") == testing::read_bytes(dir / "seq_b/frame_000007.png"));
+  EXPECT_FALSE(testing::read_bytes(dir / "still_b.png") == testing::read_bytes(dir / "still.png")) << "no overlay drawn";
 }
 
 TEST(RenderView, BadViewOptionsExit2NamingTheOption) {
@@ -103,7 +121,10 @@ TEST(RenderView, BadViewOptionsExit2NamingTheOption) {
       {"--still 0.5 --png X --camera orbit", "camera"},
       {"--still 0.5", "--png"},
       {"--png X", "--still"},
-      {"--mp4 v.mp4 --overlay " + run, "--overlay"},
+      {"--plots P --overlay " + run, "--overlay"},
+      {"--still 0.5 --png X --mp4 v.mp4", "--mp4"},
+      {"--still 99 --png X", "--still 99: no frame at that time (the log spans 0 .. 1 s)"},
+      {"--mp4 v.mp4 --from 5 --to 6", "--from/--to: no frame in the time range"},
   };
   for (const auto& [options, named] : cases) {
     const auto r = testing::run_vascsim("render " + run + " " + options, dir);

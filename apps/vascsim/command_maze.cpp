@@ -1,4 +1,6 @@
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
@@ -67,7 +69,10 @@ int run_maze_command(int argc, char** argv) {
   scene.path.corner_radius = args.number("corner-radius", scene.path.corner_radius, 0.0, 1e3);
   scene.path.speed = args.number("speed", scene.path.speed, 1e-9, 1e3);
 
-  check_output_path(*out, args.flag("force"));
+  // Never replace the scene it was made from, nor a device or pipe, even with --force.
+  std::vector<std::string> inputs;
+  if (!scene.file.empty()) inputs.push_back(scene.file);
+  check_replaceable_output(*out, args.flag("force"), inputs);
   write_file_atomically(*out, maze_document(scene));
   if (maze.explicit_walls)
     std::printf("wrote %s (%zu explicit walls)\n", out->c_str(), maze.walls.size());

@@ -12,6 +12,7 @@
 #include "apps/vascsim/commands.h"
 #include "render/render_run.h"
 #include "render/view.h"
+#include "sim/log/frame_log.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::cli {
@@ -36,7 +37,7 @@ const std::vector<OptionSpec>& render_options() {
       {"center", "X,Y", "centre of the view in metres (implies --camera center)"},
       {"layers", "a,b,...", "draw exactly these layers (default: all but nodes,friction,drag); see docs/rendering.md"},
       {"hide", "a,b,...", "do not draw these layers (applied after --layers)"},
-      {"overlay", "RUN_B", "with --still: draw run B's rod at the same time over this run's map"},
+      {"overlay", "RUN_B", "draw run B's rod at the same time over this run's map (a still or a video)"},
       {"actuation-scale", "PX_PER_N", "magnetic force arrow length per newton (default: automatic)"},
       {"contact-scale", "PX_PER_N", "contact force arrow length per newton (default: automatic)"},
       {"aa", "analytic|msaa", "anti-aliasing: analytic edges (default) or 4x multisampling"},
@@ -111,6 +112,8 @@ int run_render_command(int argc, char** argv) {
   else throw UsageError("--aa: expected analytic or msaa, got '" + aa + "'");
   o.force = args.flag("force");
 
+  if (const std::string warning = incomplete_run_warning(args.positional()[0]); !warning.empty())
+    std::fprintf(stderr, "vascsim render: %s\n", warning.c_str());
   bool progress_shown = false;
   o.progress = terminal_progress(!args.flag("quiet"), progress_shown);
   const render::RenderReport r = render::render_run(args.positional()[0], o);

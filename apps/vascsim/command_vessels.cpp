@@ -1,4 +1,6 @@
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
@@ -42,7 +44,10 @@ int run_vessels_command(int argc, char** argv) {
   const Scene scene = read_scene_file(*scene_file);
   if (!scene.has_environment || scene.environment != EnvironmentKind::kVessels)
     throw UsageError("scene " + scene.file + " has no \"vessels\" section (for a maze use vascsim maze)");
-  check_output_path(*out, args.flag("force"));
+  // Never replace the scene or the mask image it was made from, nor a device or pipe, even with --force.
+  std::vector<std::string> inputs{scene.file};
+  if (scene.vessels.from_mask) inputs.push_back(scene.vessels.mask.resolved);
+  check_replaceable_output(*out, args.flag("force"), inputs);
   const std::string doc = vessels_document(scene);
   write_file_atomically(*out, doc);
   std::printf("wrote %s (%s)\n", out->c_str(), scene.vessels.from_mask ? "traced from an image mask" : "vessel graph");
