@@ -15,6 +15,7 @@
 #include <random>
 #include <thread>
 
+#include "sim/scene/input_error.h"
 #include "tests/cli_test_support.h"
 #include "tests/render_test_util.h"
 #include "tests/replay_test_support.h"
@@ -165,6 +166,41 @@ TEST(ReplayRobustness, TwoClientsAtOnce) {
     });
   for (auto& t : tabs) t.join();
   EXPECT_EQ(identical, 20);
+}
+
+// A second server on a port the first holds is refused, not given half of its connections.
+TEST(ReplayRobustness, ASecondServerOnTheSamePortIsRefused) {
+  ScratchDir dir("replay_same_port");
+  const std::string run = small_run(dir);
+  LiveServer first({{run}});
+  ReplayOptions second;
+  second.runs = {run};
+  second.port = first.server().port();
+  try {
+    ReplayServer s(second);
+    ADD_FAILURE() << "a second server listens on port " << second.port;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot listen on 127.0.0.1:" + std::to_string(second.port)), std::string::npos)
+        << e.what();
+  }
+}
+
+// More idle keep-alive connections than a small worker pool (two browser tabs hold 12) do not
+// stall the next request.
+TEST(ReplayRobustness, IdleKeepAliveConnectionsDoNotStallTheServer) {
+  ScratchDir dir("replay_idle");
+  LiveServer s({{small_run(dir)}});
+  std::vector<std::unique_ptr<httplib::Client>> idle;
+  for (int k = 0; k < 16; ++k) {
+    idle.push_back(std::make_unique<httplib::Client>("127.0.0.1", s.server().port()));
+    idle.back()->set_keep_alive(true);
+    ASSERT_EQ(idle.back()->Get(s.authorised("/api/run").c_str())->status, 200);
+  }
+  httplib::Client fresh("127.0.0.1", s.server().port());
+  fresh.set_read_timeout(2);  // s; the library's keep-alive timeout, which stalled it, is 5 s
+  const auto r = fresh.Get(s.authorised("/api/run").c_str());
+  ASSERT_TRUE(r) << "no answer within 2 s beside 16 idle connections";
+  EXPECT_EQ(r->status, 200);
 }
 
 // The command: prints one URL line, serves, and exits 0 on SIGINT.

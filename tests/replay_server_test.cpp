@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -122,6 +124,10 @@ TEST(ReplayServer, NoTokenModeServesWithoutOne) {
   LiveServer s(o);
   EXPECT_EQ(s.get("/api/run", false)->status, 200);
   EXPECT_EQ(s.server().url().find("token"), std::string::npos);
+  // Nor a token to stop another site: a Host it names (DNS rebinding) or a post from its page.
+  EXPECT_EQ(s.client().Get("/api/run", {{"Host", "evil.example.com"}})->status, 403);
+  EXPECT_EQ(s.client().Post("/api/bookmarks", {{"Origin", "http://evil.example.com"}}, R"({"name": "x", "t": 0})", "text/plain")->status, 403);
+  EXPECT_EQ(s.client().Get("/api/run", {{"Host", "localhost:1"}, {"Origin", "http://127.0.0.1:1"}})->status, 200);
 }
 
 TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
@@ -133,6 +139,7 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
       {"/api/frame.png?t=1e400", "t"},
       {"/api/frame.png?t=", "t"},
       {"/api/frame.png?width=5000", "width"},
+      {"/api/frame.png?t=1&t=2", "t"},
       {"/api/frame.png?height=0", "height"},
       {"/api/frame.png?width=12.5", "width"},
       {"/api/frame.png?zoom=0", "zoom"},
@@ -300,6 +307,12 @@ TEST(ReplayServer, CompareAlignsRunsBySimulatedTime) {
                 .exit_code,
             0);
   EXPECT_TRUE(s.get("/api/frame.png?t=3&width=320&height=240&overlay=b")->body == vascsim::test::read_text(png));
+
+  // The shorter run first: the overlay, the longer run, moves on past the first run's end (each
+  // run clamped to its own range, not the overlay to run a's).
+  LiveServer reversed({{run_b, run_a}});
+  EXPECT_NE(reversed.get("/api/frame.png?t=6&width=320&height=240&overlay=b")->body,
+            reversed.get("/api/frame.png?t=9&width=320&height=240&overlay=b")->body);
 }
 
 TEST(ReplayServer, BookmarksAreSavedAndAForeignFileIsLeftAlone) {
@@ -352,6 +365,57 @@ TEST(ReplayServer, ExportWritesANewMp4EachTime) {
   }
   EXPECT_EQ(files[0], "export-001.mp4");
   EXPECT_EQ(files[1], "export-002.mp4");
+}
+
+// Two servers on one run (two users, or a forgotten one): exports started at once get numbers
+// of their own, and bookmarks added through both are all kept.
+TEST(ReplayServer, TwoServersOnOneRunShareItsNumbersAndBookmarks) {
+  ScratchDir dir("replay_two_servers");
+  const std::string run = synthetic_run(dir, "run", long_spec());
+  LiveServer s1({{run}}), s2({{run}});
+  LiveServer* servers[] = {&s1, &s2};
+  int ids[2];
+  for (int k = 0; k < 2; ++k) {
+    const auto r = servers[k]->client().Post(
+        servers[k]->authorised("/api/export?from=1&to=2&width=160&height=120&fps=10").c_str(), "", "text/plain");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    ids[k] = json::parse(r->body)["id"];
+  }
+  std::set<std::string> files;
+  for (int k = 0; k < 2; ++k) {
+    json status;
+    for (int wait = 0; wait < 600; ++wait) {
+      status = get_json(*servers[k], "/api/export/status?id=" + std::to_string(ids[k]));
+      if (status["state"] != "running") break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    ASSERT_EQ(status["state"], "done") << status.dump();
+    files.insert(status["file"].get<std::string>());
+  }
+  EXPECT_EQ(files.size(), 2u) << "both servers wrote " << *files.begin();
+
+  std::vector<std::thread> writers;
+  for (int k = 0; k < 2; ++k)
+    writers.emplace_back([&, k] {
+      for (int b = 0; b < 20; ++b)
+        servers[k]->post("/api/bookmarks", R"({"name": "b)" + std::to_string(k) + "-" + std::to_string(b) + R"(", "t": 1})");
+    });
+  for (auto& w : writers) w.join();
+  EXPECT_EQ(get_json(s1, "/api/bookmarks")["bookmarks"].size(), 40u);
+}
+
+TEST(ReplayServer, BookmarkNamesAreCountedInCharactersAndTimesAreBounded) {
+  ScratchDir dir("replay_bookmark_fields");
+  LiveServer s({{synthetic_run(dir, "run")}});
+  std::string e200, e201 = "\u00e9";
+  for (int k = 0; k < 200; ++k) e200 += "\u00e9";
+  e201 += e200;
+  EXPECT_EQ(s.post("/api/bookmarks", R"({"name": ")" + e200 + R"(", "t": 0.5})")->status, 200) << "200 characters";
+  EXPECT_EQ(s.post("/api/bookmarks", R"({"name": ")" + e201 + R"(", "t": 0.5})")->status, 400);
+  EXPECT_EQ(s.post("/api/bookmarks", R"({"name": "   ", "t": 0.5})")->status, 400);
+  EXPECT_EQ(s.post("/api/bookmarks", R"({"name": "a\u0000b", "t": 0.5})")->status, 400);
+  EXPECT_EQ(s.post("/api/bookmarks", R"({"name": "late", "t": 1e13})")->status, 400);
 }
 
 }  // namespace

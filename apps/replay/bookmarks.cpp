@@ -16,6 +16,19 @@ using nlohmann::json;
 
 namespace {
 constexpr std::size_t kMaxBookmarks = 10000;
+
+// 1..200 characters (UTF-8 code points, as the page's input counts them; the JSON reader has
+// checked the encoding), not all spaces, no control characters.
+bool readable_name(const std::string& name) {
+  std::size_t characters = 0;
+  bool visible = false;
+  for (const unsigned char c : name) {
+    if ((c & 0xC0) != 0x80) ++characters;  // not a continuation byte
+    if (c < 0x20 || c == 0x7F) return false;
+    if (c != ' ') visible = true;
+  }
+  return characters >= 1 && characters <= 200 && visible;
+}
 }
 
 json load_bookmarks(const std::string& path) {
@@ -40,13 +53,14 @@ json load_bookmarks(const std::string& path) {
 
 json add_bookmark(const std::string& path, const json& b) {
   if (!b.is_object()) throw ParamError("body", "expected a JSON object {\"name\", \"t\", \"view\"}");
-  if (!b.contains("name") || !b["name"].is_string() || b["name"].get<std::string>().empty() ||
-      b["name"].get<std::string>().size() > 200)
-    throw ParamError("name", "expected a string of 1..200 characters");
-  if (!b.contains("t") || !b["t"].is_number() || !std::isfinite(b["t"].get<double>()))
-    throw ParamError("t", "expected a finite time in seconds");
+  if (!b.contains("name") || !b["name"].is_string() || !readable_name(b["name"].get<std::string>()))
+    throw ParamError("name", "expected a string of 1..200 characters, not only spaces, without control characters");
+  if (!b.contains("t") || !b["t"].is_number() || !(std::abs(b["t"].get<double>()) <= 1e12))
+    throw ParamError("t", "expected a time in seconds within [-1e12, 1e12], as /api/frame.png takes it");
   if (b.contains("view") && (!b["view"].is_string() || b["view"].get<std::string>().size() > 4096))
     throw ParamError("view", "expected a string of at most 4096 characters");
+  // Another server on this run may add one at the same moment: read, add and write in turn.
+  const DirectoryLock lock(std::filesystem::path(path).parent_path().string());
   json list = load_bookmarks(path);
   if (list.size() >= kMaxBookmarks) throw ParamError("name", "this run already has 10000 bookmarks");
   list.push_back({{"name", b["name"]}, {"t", b["t"]}, {"view", b.value("view", "")}});

@@ -17,6 +17,10 @@ ExportJobs::~ExportJobs() {
 }
 
 std::string ExportJobs::reserve_name(const std::string& out_dir) {
+  // Choosing a free number and claiming it is one step for every server on this run: the claim
+  // is this process's temporary name for the file, made now (the encoder writes into it later),
+  // which another server sees as "in use" until this one ends.
+  const DirectoryLock lock(out_dir);
   for (int n = 1; n < 100000; ++n) {
     char name[32];
     std::snprintf(name, sizeof name, "export-%03d.mp4", n);
@@ -24,6 +28,9 @@ std::string ExportJobs::reserve_name(const std::string& out_dir) {
     std::error_code ec;
     // Not a name another server on this run is still writing (its temporary name is in use).
     if (reserved_.count(path) || fs::exists(path, ec) || temporary_in_use(path)) continue;
+    std::FILE* claim = std::fopen(temporary_sibling(path).c_str(), "wb");
+    if (!claim) throw InputError(out_dir + ": cannot create an export there (not writable?)");
+    std::fclose(claim);
     reserved_.insert(path);
     return path;
   }
@@ -34,7 +41,7 @@ int ExportJobs::start(const std::string& run_path, const std::string& out_dir, r
   std::lock_guard<std::mutex> lock(mutex_);
   int running = 0;
   for (const auto& [id, job] : jobs_) running += !job->finished;
-  if (running >= 2) throw InputError("two exports are already running; wait for one to finish");
+  if (running >= 2) throw ExportsBusy("two exports are already running; wait for one to finish");
   options.mp4_path = reserve_name(out_dir);
   options.png_dir.clear();
   options.plots_dir.clear();
@@ -53,6 +60,7 @@ int ExportJobs::start(const std::string& run_path, const std::string& out_dir, r
       j->path = report.video_path;
     } catch (const std::exception& e) {
       j->error = e.what();
+      std::remove(temporary_sibling(options.mp4_path).c_str());  // the claim, if the encoder never took it
     }
     j->finished = true;
   });

@@ -18,8 +18,15 @@
 #include <nlohmann/json.hpp>
 
 #include "render/render_run.h"
+#include "sim/scene/input_error.h"
 
 namespace vascsim::replay {
+
+// Two exports are already running: the request is fine, the server is busy (HTTP 429).
+class ExportsBusy : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 class ExportJobs {
  public:

@@ -85,8 +85,26 @@ struct ReplayServer::Impl {
 
   std::string cookie_name() const { return "vascsim_token_" + std::to_string(port); }
 
+  // Without a token, a page on another site open in the user's browser could reach a server on
+  // this machine's loopback by DNS rebinding (a Host it names) or post to it (its Origin): both
+  // are refused. A server on another address without a token is open by the user's choice.
+  bool loopback_request(const httplib::Request& req) const {
+    const auto host_of = [](std::string h) {
+      if (const auto scheme = h.find("://"); scheme != std::string::npos) h = h.substr(scheme + 3);
+      if (!h.empty() && h[0] == '[') return h.substr(0, h.find(']') + 1);
+      return h.substr(0, h.find(':'));
+    };
+    const auto loopback = [](const std::string& h) { return h == "127.0.0.1" || h == "localhost" || h == "[::1]"; };
+    if (!loopback(host_of(req.get_header_value("Host")))) return false;
+    const std::string origin = req.get_header_value("Origin");
+    return origin.empty() || loopback(host_of(origin));
+  }
+
   bool authorised(const httplib::Request& req) const {
-    if (!options.require_token) return true;
+    if (!options.require_token) {
+      const bool on_loopback = options.host == "127.0.0.1" || options.host == "localhost" || options.host == "::1";
+      return !on_loopback || loopback_request(req);
+    }
     if (req.has_param("token") && same_secret(req.get_param_value("token"), token)) return true;
     const std::string cookies = req.get_header_value("Cookie");
     const std::string key = cookie_name() + "=";
@@ -106,6 +124,15 @@ struct ReplayServer::Impl {
     return *runs[id == "a" ? 0 : 1];
   }
 
+  // The `overlay` parameter: "b", the second run drawn over run a's map; none when absent.
+  ReplayRun* overlay_of(const RequestParams& p, const ReplayRun& run) {
+    const auto o = p.text("overlay");
+    if (!o) return nullptr;
+    if (runs.size() < 2 || *o != "b" || run.id() != "a")
+      throw ParamError("overlay", "expected b (the second run, drawn over run a's map; needs two runs)");
+    return runs[1].get();
+  }
+
   double time_of(const RequestParams& p, const ReplayRun& run) const {
     return p.number("t", run.source().first_time(), -1e12, 1e12);
   }
@@ -119,12 +146,7 @@ struct ReplayServer::Impl {
       std::lock_guard<std::mutex> lock(data_mutex);
       ReplayRun& run = run_of(p);
       const double t = time_of(p, run);
-      ReplayRun* overlay = nullptr;
-      if (const auto o = p.text("overlay")) {
-        if (runs.size() < 2 || *o != "b" || run.id() != "a")
-          throw ParamError("overlay", "expected b (the second run, drawn over run a's map; needs two runs)");
-        overlay = runs[1].get();
-      }
+      ReplayRun* overlay = overlay_of(p, run);
       run.refresh();
       if (overlay) overlay->refresh();
       render::ViewFrameInputs in;
@@ -291,6 +313,7 @@ struct ReplayServer::Impl {
       ReplayRun& run = run_of(p);
       path = run.source().log_path();
       out_dir = run.output_dir();
+      if (const ReplayRun* overlay = overlay_of(p, run)) o.overlay_run = overlay->source().log_path();
       const double t0 = std::max(o.from.value_or(run.source().first_time()), run.source().first_time());
       const double t1 = std::min(o.to.value_or(run.source().last_time()), run.source().last_time());
       if (std::floor((t1 - t0) * o.fps / o.speed) > 200000)
@@ -360,6 +383,8 @@ struct ReplayServer::Impl {
       body();
     } catch (const ParamError& e) {
       send_error(res, 400, e.what(), e.parameter());
+    } catch (const ExportsBusy& e) {
+      send_error(res, 429, e.what());
     } catch (const InputError& e) {
       send_error(res, 500, e.what());
     } catch (const std::exception& e) {
@@ -376,7 +401,10 @@ struct ReplayServer::Impl {
                      "default-src 'self'; img-src 'self' blob: data:; style-src 'self' 'unsafe-inline'; "
                      "connect-src 'self'; media-src 'self' blob:; frame-ancestors 'none'");
       if (authorised(req)) return httplib::Server::HandlerResponse::Unhandled;
-      send_error(res, 403, "missing or wrong token: open the URL that vascsim replay printed", "token");
+      if (options.require_token)
+        send_error(res, 403, "missing or wrong token: open the URL that vascsim replay printed", "token");
+      else
+        send_error(res, 403, "Host or Origin is not this machine's loopback: a request from another site is refused");
       return httplib::Server::HandlerResponse::Handled;
     });
     http.Get("/", [this](const httplib::Request& req, httplib::Response& res) { asset("index.html", req, res); });
@@ -409,6 +437,15 @@ struct ReplayServer::Impl {
     http.set_payload_max_length(1 << 20);  // bookmark bodies are small
     http.set_read_timeout(10);
     http.set_keep_alive_max_count(1000);
+    // A browser keeps up to 6 idle keep-alive connections per tab, each holding a worker until it
+    // times out: the library's default pool (one per core, at least 8) stalled a second tab.
+    http.new_task_queue = [] { return new httplib::ThreadPool(64); };
+    // SO_REUSEADDR, to restart on a port in TIME_WAIT; not the library's SO_REUSEPORT as well,
+    // which let a second server listen on the same port and take half of the first's requests.
+    http.set_socket_options([](socket_t sock) {
+      int yes = 1;
+      ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    });
   }
 };
 

@@ -20,6 +20,8 @@ std::string quoted(const std::string& value) {
 std::optional<std::string> RequestParams::text(const std::string& name) const {
   const auto it = query_.find(name);
   if (it == query_.end()) return std::nullopt;
+  // Which of two values was meant is a guess; a page or script that builds the URL can say.
+  if (query_.count(name) > 1) throw ParamError(name, "given more than once");
   if (it->second.size() > 4096) throw ParamError(name, "longer than 4096 characters");
   return it->second;
 }

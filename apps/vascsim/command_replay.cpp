@@ -45,6 +45,7 @@ int run_replay_command(int argc, char** argv) {
   o.runs = args.positional();
   o.port = static_cast<int>(args.integer("port", 0, 0, 65535));
   o.host = args.value("host").value_or("127.0.0.1");
+  if (o.host.empty()) throw UsageError("--host: expected an address such as 127.0.0.1 or ::1, got ''");
   o.require_token = !args.flag("no-token");
 
   // SIGINT and SIGTERM are taken by one waiting thread, not by a handler that could interrupt

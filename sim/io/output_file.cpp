@@ -1,6 +1,8 @@
 #include "sim/io/output_file.h"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -22,6 +24,21 @@ void check_output_path(const std::string& path, bool overwrite, const std::strin
   if (!parent.empty() && !fs::is_directory(parent, ec))
     throw InputError(path + ": directory " + parent.string() + " does not exist");
 }
+
+DirectoryLock::DirectoryLock(const std::string& dir) {
+  fd_ = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd_ < 0) throw InputError(dir + ": cannot open the directory to lock it (" + std::strerror(errno) + ")");
+  int result;
+  while ((result = ::flock(fd_, LOCK_EX)) != 0 && errno == EINTR) {
+  }
+  if (result != 0) {
+    const int e = errno;
+    ::close(fd_);
+    throw InputError(dir + ": cannot lock the directory (" + std::strerror(e) + ")");
+  }
+}
+
+DirectoryLock::~DirectoryLock() { ::close(fd_); }
 
 void check_replaceable_output(const std::string& path, bool overwrite, const std::vector<std::string>& inputs,
                               const std::string& option_hint) {

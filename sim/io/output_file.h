@@ -19,6 +19,21 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
 // Throws InputError (naming the path and the system's reason) on failure, leaving nothing behind.
 void write_file_atomically(const std::string& path, const std::string& content);
 
+// An exclusive lock on a directory (flock on the directory itself, so no lock file is left in
+// it), held for the object's life: processes that choose or update files there (two replay
+// servers numbering exports, adding bookmarks) take turns. Blocks until the lock is free.
+// Throws InputError naming the directory if it cannot be opened or locked.
+class DirectoryLock {
+ public:
+  explicit DirectoryLock(const std::string& dir);
+  ~DirectoryLock();
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
 // Temporary names. Every output (a video, each PNG, a summary) is written under a hidden name of
 // its own, unique to the writing process, and renamed into place when complete:
 //   <dir>/.<name>.tmp-<host>-<pid>

@@ -696,6 +696,9 @@ def check_compare(page, shots):
     page.ready()
     p = page.frame_params('a')
     R.check(p.get('overlay') == 'b', 'compare: the overlay toggle requests overlay=b', f'{p}')
+    clip = page.d.find_element(By.ID, 'command-clip').get_attribute('value')
+    R.check(f" --overlay {page.api.get('/api/run', run='b')['path']}" in clip,
+            'compare: "copy as command" draws run b over run a too (--overlay B)', clip)
     page.shot(shots, 'compare_overlay.png')
     page.collect_log()
 

@@ -1262,12 +1262,13 @@
     if (!a) return;
     const path = shellQuote(a.path || 'RUN_DIR');
     const tText = Math.abs(S.t * 1000 - Math.round(S.t * 1000)) < 1e-6 ? S.t.toFixed(3) : fmtParamT(S.t);
-    const still = `vascsim render ${path} --still ${tText} --png view.png${commandView()}`;
+    const b = S.info.b;
+    const overlay = S.compare && S.compareMode === 'overlay' && b ? ` --overlay ${shellQuote(b.path || 'RUN_B')}` : '';
+    const still = `vascsim render ${path} --still ${tText} --png view.png${commandView()}${overlay}`;
     const r = exportRange();
-    const clip = `vascsim render ${path} --from ${fmtParamT(r.from)} --to ${fmtParamT(r.to)} --fps ${r.fps} --speed ${r.speed} --mp4 clip.mp4${commandView()}`;
-    const note = S.compare && S.compareMode === 'overlay' ? '\n# run B\'s overlaid rod is not part of this command' : '';
-    $('command-still').value = still + note;
-    $('command-clip').value = clip + note;
+    const clip = `vascsim render ${path} --from ${fmtParamT(r.from)} --to ${fmtParamT(r.to)} --fps ${r.fps} --speed ${r.speed} --mp4 clip.mp4${commandView()}${overlay}`;
+    $('command-still').value = still;
+    $('command-clip').value = clip;
   }
   async function copyText(el) {
     const text = el.value;
