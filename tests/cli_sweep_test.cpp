@@ -147,6 +147,32 @@ TEST(SweepCli, CtrlCStopsCleanlyAndAResumeGivesTheSameTable) {
             deterministic_columns(read_text(dir + "/whole/results.csv")));
 }
 
+TEST(SweepCli, ASweepKilledWithSigkillTakesItsRunsWithIt) {
+  // A resumed sweep must not start an entry beside an orphan still writing it: the runs of a
+  // sweep killed with SIGKILL stop (the kernel sends them SIGTERM), and until they have, each
+  // holds its entry's lock.
+  const std::string dir = fresh_temp_dir("sweep_sigkill");
+  const std::string sweep = dir + "/long.json";
+  write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
+                        R"(", "axes": {"/run/duration": [1000, 1000], "/control/kp": [4]}})");
+  const std::string out = dir + "/out";
+  const CommandResult r = run_shell("{ " + std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + out +
+                                    " --jobs 2 --no-merge & pid=$!; "
+                                    "until [ -s " + out + "/runs/0000/frames.vlog ] && [ -s " + out + "/runs/0001/frames.vlog ]; do sleep 0.01; done; "
+                                    "kill -KILL $pid; wait $pid; echo \"exit code $?\"; "
+                                    // Both locks free within 20 s: the runs have ended.
+                                    "for i in $(seq 200); do flock -n " + out + "/runs/0000/.lock true && flock -n " + out +
+                                    "/runs/0001/.lock true && { echo unlocked; break; }; sleep 0.1; done; }");
+  ASSERT_TRUE(has(r.output, "exit code 137")) << r.output;
+  ASSERT_TRUE(has(r.output, "unlocked")) << r.output;
+  // Nothing writes the logs any more (an orphan would: 1000 s of maze take minutes).
+  const auto size0 = fs::file_size(out + "/runs/0000/frames.vlog"), size1 = fs::file_size(out + "/runs/0001/frames.vlog");
+  ::usleep(500000);
+  EXPECT_EQ(fs::file_size(out + "/runs/0000/frames.vlog"), size0);
+  EXPECT_EQ(fs::file_size(out + "/runs/0001/frames.vlog"), size1);
+  EXPECT_FALSE(fs::exists(out + "/runs/0000/status.json")) << "a run the sweep did not see end is not recorded";
+}
+
 TEST(SweepCli, ShowsProgressWithCountsAndAnEtaOnATerminalOnly) {
   const std::string dir = fresh_temp_dir("sweep_progress");
   const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);
@@ -225,6 +251,16 @@ TEST(SweepCli, EmitsGnuParallelAndSlurmFiles) {
   const std::string submit = read_text(out + "/slurm/submit.sh");
   EXPECT_TRUE(has(submit, "--dependency=\"$dependency\"")) << submit;
   EXPECT_TRUE(has(submit, "dependency=afterany")) << submit;
+
+  // A value that would end its #SBATCH line (and add a directive) is refused, before any file.
+  const CommandResult injected = sweep_command(sweep + " --out " + dir + "/injected --emit slurm --partition \"$(printf 'debug\\n#SBATCH --wrap=x')\"");
+  EXPECT_EQ(injected.exit_code, 2) << injected.output;
+  EXPECT_TRUE(has(injected.output, "--partition: expected partition names")) << injected.output;
+  EXPECT_FALSE(fs::exists(dir + "/injected")) << "a refused emit made the sweep directory";
+  // A name with a space is one word in #SBATCH --job-name.
+  const std::string spaced = write_maze_sweep(dir, "spaced", kAxes, 0.3, R"(, "name": "kp sweep")");
+  ASSERT_EQ(sweep_command(spaced + " --out " + dir + "/spaced --emit slurm").exit_code, 0);
+  EXPECT_TRUE(has(read_text(dir + "/spaced/slurm/array.sbatch"), "#SBATCH --job-name=vascsim-kp_sweep\n"));
 }
 
 TEST(SweepCli, SlurmArraysLongerThanAChunkAreSplitWithOffsets) {
@@ -234,8 +270,9 @@ TEST(SweepCli, SlurmArraysLongerThanAChunkAreSplitWithOffsets) {
   ASSERT_EQ(s.exit_code, 0) << s.output;
   const std::string submit = read_text(dir + "/out/slurm/submit.sh");
   EXPECT_TRUE(has(submit, "--array=0-999%50 --export=ALL,VASCSIM_SWEEP_OFFSET=0 ")) << submit;
-  EXPECT_TRUE(has(submit, "--array=0-999%50 --export=ALL,VASCSIM_SWEEP_OFFSET=1000 ")) << submit;
-  EXPECT_TRUE(has(submit, "--array=0-499%50 --export=ALL,VASCSIM_SWEEP_OFFSET=2000 ")) << submit;
+  // Each array after the first waits for the one before: Slurm throttles each array alone.
+  EXPECT_TRUE(has(submit, "--array=0-999%50 --dependency=afterany:\"${ids[-1]}\" --export=ALL,VASCSIM_SWEEP_OFFSET=1000 ")) << submit;
+  EXPECT_TRUE(has(submit, "--array=0-499%50 --dependency=afterany:\"${ids[-1]}\" --export=ALL,VASCSIM_SWEEP_OFFSET=2000 ")) << submit;
   EXPECT_TRUE(fs::exists(dir + "/out/runs/2499/scene.json"));
 }
 

@@ -116,6 +116,19 @@ TEST(SweepSpec, FixedOverridesApplyToEveryRunAndDefaultsCanBeSwept) {
                "/overrides/~1loads~1damping~1coefficient: /loads/damping/coefficient is also an axis");
 }
 
+TEST(SweepSpec, PointersThatOverlapAreRefused) {
+  // One inside another would set a field twice: the run's value and the results' column could
+  // disagree (an axis /loads/damping beside /loads/damping/coefficient, or an override inside an axis).
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [1, 2], "/loads/damping": [{"coefficient": 3}]})"),
+               "/axes/~1loads~1damping: /loads/damping overlaps the axis /loads/damping/coefficient");
+  expect_error(sweep_with_axes(R"({"/loads/damping": [{"coefficient": 3}]})", R"(, "overrides": {"/loads/damping/coefficient": 2})"),
+               "/overrides/~1loads~1damping~1coefficient: /loads/damping/coefficient overlaps the axis /loads/damping");
+  expect_error(sweep_with_axes(R"({"/solver/dt": [1e-3]})", R"(, "overrides": {"/rod/length": 0.2, "/rod": {"length": 0.3}})"),
+               "/overrides/~1rod: /rod overlaps the override /rod/length");
+  // A shared prefix that is not a whole token is no overlap.
+  EXPECT_EQ(spec_of(sweep_with_axes(R"({"/rod/length": [0.2], "/rod/length2": [1]})")).axes.size(), 2u);
+}
+
 TEST(SweepSpec, APointerToNoFieldIsAnErrorNamingTheFieldsThere) {
   expect_error(sweep_with_axes(R"({"/loads/damping/coefficientp": [1, 2]})"), "/axes/~1loads~1damping~1coefficientp: the scene sweeps/tiny.json has no field /loads/damping/coefficientp (fields of /loads/damping: ");
   EXPECT_NE(error_of(sweep_with_axes(R"({"/loads/damping/coefficientp": [1, 2]})")).find("enabled"), std::string::npos);

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -49,7 +50,7 @@ bool RunProcess::lock(const SweepDirectory& sweep, std::size_t index) {
   id_ = sweep.manifest.runs.at(index).id;
   run_dir_ = run_directory(sweep, index);
   const std::string path = run_dir_ + "/.lock";
-  // O_CLOEXEC: the child must not hold the lock after the sweep that started it is gone.
+  // O_CLOEXEC: only the run started for this entry keeps the lock (start()), no other child.
   const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError(path + ": cannot open (" + std::strerror(errno) + ")");
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
@@ -74,12 +75,17 @@ void RunProcess::start(const std::string& exe, const std::function<int(int, char
   const std::string log = out + "/run.log";
   start_ = std::chrono::steady_clock::now();
   std::fflush(nullptr);  // nothing buffered in the sweep may be written twice
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) throw InputError(std::string("cannot start a vascsim run process (fork: ") + std::strerror(errno) + ")");
   if (pid == 0) {
     // The child. The sweep's handlers would only set its stop flag: a run stops on SIGINT and
     // SIGTERM as `vascsim run` does.
     for (int signal : {SIGINT, SIGTERM, SIGALRM}) std::signal(signal, SIG_DFL);
+    // A sweep killed with SIGKILL cannot stop its runs: the kernel does (SIGTERM, which a run
+    // obeys as on Ctrl-C). Without this, a resumed sweep would start the same entry beside the
+    // orphan still writing it. The parent may have died before the request took effect.
+    if (::prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || ::getppid() != parent) ::_exit(143);
     if (::chdir(sweep_dir_.c_str()) != 0) ::_exit(126);
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int null = ::open("/dev/null", O_RDONLY);
@@ -87,9 +93,11 @@ void RunProcess::start(const std::string& exe, const std::function<int(int, char
     ::dup2(null, STDIN_FILENO);
     ::dup2(fd, STDOUT_FILENO);
     ::dup2(fd, STDERR_FILENO);
-    // Every other descriptor is the sweep's: above all the locks of the other running runs,
-    // which this child must not keep held after they end.
-    ::close_range(3, ~0U, 0);
+    // The run holds its own lock (as descriptor 3, kept across exec) for as long as it runs,
+    // also if the sweep is gone. Every other descriptor is the sweep's: above all the locks of
+    // the other running runs, which this child must not keep held after they end.
+    if (::dup2(lock_fd_, 3) != 3 || ::fcntl(3, F_SETFD, 0) != 0) ::_exit(126);
+    ::close_range(4, ~0U, 0);
     if (run_command) {
       const int code = run_command(static_cast<int>(args.size()), argv.data());
       std::fflush(nullptr);

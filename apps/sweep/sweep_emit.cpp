@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "apps/sweep/run_process.h"
@@ -32,6 +33,22 @@ void check_slurm_path(const std::string& path) {
   if (path.find_first_of("% \t\n\"'\\") != std::string::npos)
     throw InputError(path + ": a path with spaces, quotes or '%' cannot be named in #SBATCH lines; "
                      "move the sweep directory or the vascsim executable");
+}
+
+// A #SBATCH value is one word: the sweep's name (which may hold spaces) with every character but
+// letters, digits and "_.+-" as '_'.
+std::string slurm_word(const std::string& text) {
+  std::string out = text;
+  for (char& c : out)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && std::string("_.+-").find(c) == std::string::npos) c = '_';
+  return out;
+}
+
+// Options written into #SBATCH lines verbatim: refused unless they are what sbatch takes, so no
+// value can end the line and add a directive or a command.
+void check_slurm_option(const std::string& option, const std::string& value, const char* allowed, const char* expected) {
+  if (value.find_first_not_of(allowed) != std::string::npos)
+    throw InputError("--" + option + ": expected " + expected + ", got '" + value + "'");
 }
 
 }  // namespace
@@ -78,10 +95,17 @@ std::vector<std::string> emit_gnu_parallel(const SweepDirectory& sweep, const Pa
   return {script, jobs};
 }
 
+void check_slurm_options(const SlurmOptions& options, const std::string& sweep_dir) {
+  check_slurm_option("partition", options.partition, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.,",
+                     "partition names (letters, digits, '_', '-', '.', separated by ',')");
+  check_slurm_option("time", options.time_limit, "0123456789:-", "a Slurm time such as 30, 0:30:00 or 1-12:00:00");
+  check_slurm_path(absolute_path(sweep_dir));
+  check_slurm_path(vascsim_executable());
+}
+
 std::vector<std::string> emit_slurm(const SweepDirectory& sweep, const SlurmOptions& options, bool force) {
   const std::string dir = absolute_path(sweep.dir), exe = vascsim_executable();
-  check_slurm_path(dir);
-  check_slurm_path(exe);
+  check_slurm_options(options, dir);
   const fs::path out = fs::path(dir) / "slurm";
   const std::string array = (out / "array.sbatch").string(), merge = (out / "merge.sbatch").string(),
                     submit = (out / "submit.sh").string(), logs = (out / "logs").string();
@@ -95,7 +119,7 @@ std::vector<std::string> emit_slurm(const SweepDirectory& sweep, const SlurmOpti
   const std::string throttle = options.max_parallel > 0 ? "%" + std::to_string(options.max_parallel) : "";
   std::string common;
   if (!options.partition.empty()) common += "#SBATCH --partition=" + options.partition + "\n";
-  const std::string job = "vascsim-" + sweep.manifest.name;
+  const std::string job = "vascsim-" + slurm_word(sweep.manifest.name);
 
   std::string a = "#!/bin/bash\n"
                   "# One task of the Slurm job array of the sweep '" + sweep.manifest.name + "': entry\n"
@@ -127,9 +151,12 @@ std::vector<std::string> emit_slurm(const SweepDirectory& sweep, const SlurmOpti
   if (n <= chunk) {
     s += "ids+=(\"$(sbatch --parsable " + shell_quote(array) + " | cut -d';' -f1)\")\n";
   } else {
+    // Slurm applies an array's %M throttle to that array alone: with --max-parallel, each array
+    // waits for the one before it, so no more than M tasks of the sweep run at once.
     for (std::size_t first = 0; first < n; first += chunk) {
       const std::size_t count = std::min(chunk, n - first);
-      s += "ids+=(\"$(sbatch --parsable --array=0-" + std::to_string(count - 1) + throttle +
+      const std::string after = first > 0 && options.max_parallel > 0 ? " --dependency=afterany:\"${ids[-1]}\"" : "";
+      s += "ids+=(\"$(sbatch --parsable --array=0-" + std::to_string(count - 1) + throttle + after +
            " --export=ALL,VASCSIM_SWEEP_OFFSET=" + std::to_string(first) + " " + shell_quote(array) + " | cut -d';' -f1)\")\n";
     }
   }

@@ -40,6 +40,9 @@ struct SlurmOptions {
 // existing ones unless `force`. Throws InputError.
 std::vector<std::string> emit_gnu_parallel(const SweepDirectory& sweep, const ParallelOptions& options, bool force);
 std::vector<std::string> emit_slurm(const SweepDirectory& sweep, const SlurmOptions& options, bool force);
+// What emit_slurm refuses, checked before a sweep directory `sweep_dir` is made: a partition or
+// time that is not one #SBATCH word, a directory or executable path #SBATCH lines cannot name.
+void check_slurm_options(const SlurmOptions& options, const std::string& sweep_dir);
 
 // `text` quoted for a POSIX shell.
 std::string shell_quote(const std::string& text);

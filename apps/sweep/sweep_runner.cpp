@@ -134,6 +134,15 @@ RunnerReport run_sweep_entries(const SweepDirectory& sweep, const RunnerOptions&
                        sweep.manifest.runs[index].id.c_str());
         continue;
       }
+      // Another runner may have finished it between the first look and the lock.
+      const RunOutcome now = read_run_outcome(run_directory(sweep, index));
+      if (now.status == "done" || (now.status == "failed" && !options.retry_failed)) {
+        ++(now.status == "done" ? report.already_done : report.already_failed);
+        if (!options.quiet)
+          std::fprintf(stderr, "%srun %s was finished by another process meanwhile; skipped\n", progress_shown ? "\n" : "",
+                       sweep.manifest.runs[index].id.c_str());
+        continue;
+      }
       p.start(exe, options.run_command);
       ++report.ran;
       running.emplace(p.pid(), std::move(p));

@@ -161,6 +161,16 @@ int run_sweep_command(int argc, char** argv) {
   if (args.value("run-index") && (emit || args.value("shard")))
     throw UsageError("--run-index runs one entry; it does not go with --emit or --shard");
 
+  // Engine options are checked before a sweep directory is made, so a refusal writes nothing.
+  sweep::SlurmOptions slurm;
+  if (emit && *emit == "slurm") {
+    slurm.max_parallel = static_cast<int>(args.integer("max-parallel", 0, 0, 100000));
+    slurm.partition = args.value("partition").value_or("");
+    slurm.time_limit = args.value("time").value_or("");
+    slurm.retry_failed = args.flag("retry-failed");
+    sweep::check_slurm_options(slurm, args.value("out").value_or(input));
+  }
+
   // The sweep directory: made from a sweep file, or an existing one.
   sweep::SweepDirectory dir;
   std::error_code ec;
@@ -199,12 +209,7 @@ int run_sweep_command(int argc, char** argv) {
       std::printf("wrote %s (%zu entries)\nrun it:   sh %s\nthen:     vascsim sweep merge %s\n", written[1].c_str(), count,
                   written[0].c_str(), dir.dir.c_str());
     } else {
-      sweep::SlurmOptions o;
-      o.max_parallel = static_cast<int>(args.integer("max-parallel", 0, 0, 100000));
-      o.partition = args.value("partition").value_or("");
-      o.time_limit = args.value("time").value_or("");
-      o.retry_failed = args.flag("retry-failed");
-      written = sweep::emit_slurm(dir, o, args.flag("force"));
+      written = sweep::emit_slurm(dir, slurm, args.flag("force"));
       std::printf("wrote %s and %s\nsubmit:   bash %s   (the array, then the merge after it)\n", written[1].c_str(),
                   written[2].c_str(), written[0].c_str());
     }

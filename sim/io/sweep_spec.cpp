@@ -24,6 +24,14 @@ double round12(double x) {
   return std::strtod(text, nullptr);
 }
 
+// Whether one pointer is the other or lies inside it ("/control" and "/control/kp").
+bool overlaps(const std::string& a, const std::string& b) {
+  const auto inside = [](const std::string& outer, const std::string& inner) {
+    return inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 && inner[outer.size()] == '/';
+  };
+  return a == b || inside(a, b) || inside(b, a);
+}
+
 // A pointer's syntax: empty (the whole scene) is refused, and every token must start with '/'
 // and use only the escapes ~0 and ~1.
 void check_pointer(const std::string& pointer, const std::string& label, const std::string& where) {
@@ -137,6 +145,10 @@ SweepSpec read_sweep_text(const std::string& text, const std::string& label) {
   for (const std::string& key : keys_in_file_order(text, "axes")) {
     const std::string where = "/axes/" + io::escape_pointer_token(key);
     check_pointer(key, label, where);
+    for (const auto& axis : spec.axes)
+      if (overlaps(axis.pointer, key))
+        throw InputError(label + ": " + where + ": " + key + " overlaps the axis " + axis.pointer +
+                         "; a run's value would depend on which is applied last (name each field once)");
     spec.axes.push_back({key, read_values((*axes)[key], label, where)});
   }
   if (const json* fixed = in.raw("overrides")) {
@@ -144,9 +156,17 @@ SweepSpec read_sweep_text(const std::string& text, const std::string& label) {
     for (const std::string& key : keys_in_file_order(text, "overrides")) {
       const std::string where = "/overrides/" + io::escape_pointer_token(key);
       check_pointer(key, label, where);
-      for (const auto& axis : spec.axes)
+      for (const auto& axis : spec.axes) {
         if (axis.pointer == key)
           throw InputError(label + ": " + where + ": " + key + " is also an axis; an override is fixed for every run");
+        if (overlaps(axis.pointer, key))
+          throw InputError(label + ": " + where + ": " + key + " overlaps the axis " + axis.pointer +
+                           "; an override inside an axis's value, or around it, would change what the axis sets");
+      }
+      for (const auto& [other, value] : spec.overrides)
+        if (overlaps(other, key))
+          throw InputError(label + ": " + where + ": " + key + " overlaps the override " + other +
+                           "; the result would depend on which is applied last");
       spec.overrides.emplace_back(key, (*fixed)[key].dump());
     }
   }
