@@ -132,6 +132,22 @@ TEST(Advance, FeedForceIsContinuousAcrossStepEnds) {
   EXPECT_GT(compared, 100) << "steps several frames long, back to back";
 }
 
+TEST(Advance, AFeedThatStopsAsTheReferenceRampEndsRunsOn) {
+  // Both jump at t = 1 s (the end of the path's 1 s ramp, the feed's last point): one breakpoint,
+  // where two once asked for a step of length 0 and failed the run ("rod blew up", dt = 0).
+  std::string text = kStraightVessel;
+  const std::string feed = R"("advance": {"points": [[0, 0], [0.5, 0.0125], [3, 0.1375]]})";
+  text.replace(text.find(feed), feed.size(), R"("advance": {"points": [[0, 0], [1, 0.01]]})");
+  const std::string run_section = R"("run": {"duration": 3, "output_interval": 0.1})";
+  text.replace(text.find(run_section), run_section.size(),
+               R"("run": {"duration": 1.5, "output_interval": 0.1}, "path": {"ramp_time": 1})");
+  const Scene scene = read_scene_text(text, "advance.json");
+  vascsim::Run run(compile(scene));
+  Frames frames;
+  ASSERT_TRUE(run.run(frames)) << run.statistics().failure;
+  EXPECT_NEAR(run.statistics().simulated_time, 1.5, 1e-9);
+}
+
 TEST(Advance, ProfilesAndErrors) {
   AdvanceSpec a;
   a.points = {{1.0, 0.0}, {3.0, 0.1}};

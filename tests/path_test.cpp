@@ -198,6 +198,19 @@ TEST(Path, DisconnectedExplicitWallsAreAnInputError) {
   MazeSpec fine = test::paper_fig10_spec();
   fine.grid_pitch = 1e-5;  // 10^10 cells
   EXPECT_THROW(grid_from_walls(fine), InputError);
+  // One cell for the whole maze: start and goal share it, and the path went straight through the
+  // walls between them (reported as a goal reached at once).
+  for (const double pitch : {1.0, 5.0}) {
+    MazeSpec coarse = test::paper_fig10_spec();
+    coarse.grid_pitch = pitch;
+    try {
+      grid_from_walls(coarse);
+      ADD_FAILURE() << "grid_pitch " << pitch << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("/maze/grid_pitch: expected path cells no wider than the channels", 0), 0u)
+          << e.what();
+    }
+  }
 }
 
 TEST(Path, WallFollowerGivesUpOnALoopAroundTheGoal) {

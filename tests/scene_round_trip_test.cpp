@@ -5,6 +5,7 @@
 // section, which the reader refuses beside an environment.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "sim/io/scene_reader.h"
@@ -52,6 +53,14 @@ TEST(SceneRoundTrip, UnitDirectionIsAFixedPoint) {
   EXPECT_EQ(read_scene_text(R"({"control": {"disturbance": {"direction": [3, 4]}}})", "d.json")
                 .control.disturbance.direction,
             Vec2(0.6, 0.8));
+  // Directions whose plain norm overflows or underflows: once [1e200, 1e200] vanished (an
+  // infinite norm) and [1e-200, 1e-200] was refused as zero.
+  for (const char* direction : {"[1e200, 1e200]", "[1e-200, 1e-200]"}) {
+    const Vec2 d = read_scene_text(std::string(R"({"control": {"disturbance": {"direction": )") + direction + "}}}", "d.json")
+                       .control.disturbance.direction;
+    EXPECT_NEAR(d.x(), std::sqrt(0.5), 1e-15) << direction;
+    EXPECT_NEAR(d.y(), std::sqrt(0.5), 1e-15) << direction;
+  }
 }
 
 }  // namespace

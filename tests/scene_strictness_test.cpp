@@ -60,6 +60,16 @@ TEST(SceneStrictness, DuplicateKeysNulBytesAndOutOfRangeIntegersAreErrors) {
   EXPECT_EQ(read_scene_text(R"({"maze": null, "boundary": {"pinned": [3, -1]}})", "ok.json").boundary.pinned.size(), 2u);
 }
 
+TEST(SceneStrictness, AnUnknownKeyErrorListsEveryValidKeyThere) {
+  // Keys the reader only asks about (has) once went missing from the list: "vessels" at the top,
+  // "advance" in /control, "points" in /control/advance.
+  EXPECT_NE(error_of(R"({"vesels": {}})").find(", vessels)"), std::string::npos) << error_of(R"({"vesels": {}})");
+  const std::string control = error_of(R"({"control": {"advanse": {}}})");
+  EXPECT_NE(control.find("/control/advanse: unknown key (known keys here: actuated_nodes, advance,"), std::string::npos) << control;
+  const std::string advance = error_of(R"({"control": {"advance": {"pionts": [[0, 0]]}}})");
+  EXPECT_NE(advance.find("points"), std::string::npos) << advance;
+}
+
 TEST(SceneStrictness, DeepNestingIsRefusedWithoutRecursion) {
   const int levels = 100000;
   const std::string deep = std::string(levels, '[') + std::string(levels, ']');

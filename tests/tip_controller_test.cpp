@@ -4,6 +4,7 @@
 // Control Engineering, frequency response of a second-order system).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "sim/control/tip_controller.h"
@@ -80,7 +81,7 @@ TEST(TipController, KinematicModeImposesReferenceWhenOnTrack) {
   ControlSpec spec = undisturbed();
   spec.mode = ActuationMode::kKinematic;
   spec.kp = 0.5;
-  spec.kd = 0.01;
+  spec.kd = 0.0;
   TipController controller(spec, path, TipPlant{0.005, 0.0});
   const double dt = 0.01;
   const TipCommand c = controller.command(1.0, dt, path.position(1.0 + dt), path.velocity(1.0));
@@ -89,6 +90,34 @@ TEST(TipController, KinematicModeImposesReferenceWhenOnTrack) {
   // the command lies Kp of the error beyond the reference (pre-compensating a persistent offset).
   const TipCommand off = controller.command(1.0, dt, path.position(1.0 + dt) + Vec2(0, 0.01), path.velocity(1.0));
   EXPECT_NEAR(off.position.y(), -spec.kp * 0.01, 1e-12);
+}
+
+TEST(TipController, KinematicModeConvergesForAnyKdAndStep) {
+  // The tip imposed where the controller commands, 1 cm off a straight path: the cross-track
+  // error must never grow and must be gone after 3 s, for a derivative gain up to 0.4 s and steps
+  // from 0.1 to 10 ms. The paper's explicit derivative term multiplied it by about 200 per step
+  // at Kd = 0.4 s and dt = 2 ms (its loop gain Kd/dt on the controller's own last command).
+  const Trajectory path({Vec2(0, 0), Vec2(1, 0)}, 0.0, 0.1);
+  for (double kd : {0.0, 0.01, 0.4}) {
+    for (double dt : {1e-4, 2e-3, 1e-2}) {
+      ControlSpec spec = undisturbed();
+      spec.mode = ActuationMode::kKinematic;
+      spec.kp = 0.5;
+      spec.kd = kd;
+      TipController controller(spec, path, TipPlant{0.005, 0.0});
+      Vec2 tip(0, 0.01), velocity(0, 0);
+      double largest_later = 0.0;
+      const int steps = static_cast<int>(std::lround(3.0 / dt));
+      for (int i = 0; i < steps; ++i) {
+        const TipCommand c = controller.command(i * dt, dt, tip, velocity);
+        ASSERT_LE(std::abs(c.position.y()), std::abs(tip.y()) + 1e-15) << "kd " << kd << " dt " << dt << " step " << i;
+        velocity = c.velocity;
+        tip = c.position;
+        if (i > steps / 2) largest_later = std::max(largest_later, std::abs(tip.y()));
+      }
+      EXPECT_LT(largest_later, 1e-4) << "kd " << kd << " dt " << dt;
+    }
+  }
 }
 
 TEST(TipController, FieldModePointsAlongThePathAhead) {

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace vascsim::cli {
@@ -27,6 +28,9 @@ Args::Args(int argc, char** argv, int first, const std::vector<OptionSpec>& opti
     if (spec->value_name.empty()) {
       if (has_inline) throw UsageError("option '--" + name + "' takes no value");
       values_[name] = "";
+    } else if (values_.count(name)) {
+      // Which of two values was meant is a guess; a script that builds a command line can say.
+      throw UsageError("option '--" + name + "' given twice");
     } else if (has_inline) {
       values_[name] = inline_value;
     } else {
@@ -48,9 +52,13 @@ double Args::number(const std::string& name, double fallback, double min, double
   char* end = nullptr;
   errno = 0;
   const double x = std::strtod(v->c_str(), &end);
-  if (v->empty() || *end != '\0' || errno != 0 || !std::isfinite(x) || x < min || x > max)
-    throw UsageError("--" + name + ": expected a number in [" + std::to_string(min) + ", " + std::to_string(max) +
-                     "], got '" + *v + "'");
+  // strtod also reads hexadecimal ("0x10" is 16): not what anyone types for seconds or metres.
+  const bool hexadecimal = v->find_first_of("xX") != std::string::npos;
+  if (v->empty() || *end != '\0' || errno != 0 || hexadecimal || !std::isfinite(x) || x < min || x > max) {
+    char range[64];
+    std::snprintf(range, sizeof range, "[%g, %g]", min, max);
+    throw UsageError("--" + name + ": expected a number in " + range + ", got '" + *v + "'");
+  }
   return x;
 }
 

@@ -26,8 +26,14 @@ TipCommand TipController::command(double t, double dt, const Vec2& tip_position,
 
   if (spec_.mode == ActuationMode::kKinematic) {
     // Algorithm 1 lines 7-10: q_new = ref_q + Kp e + Kd de/dt, v_new = (q_new - q) / dt. Kp is
-    // dimensionless and Kd in seconds here: the correction is a position.
-    c.position = c.reference + spec_.kp * c.error + spec_.kd * velocity_error;
+    // dimensionless and Kd in seconds here: the correction is a position. The velocity error is
+    // taken at the end of the step, v_ref - v_new, not from the last step as the paper writes it:
+    // the tip is imposed, so its last velocity is this controller's own last command, and the
+    // explicit term fed it back with the gain Kd/dt (unstable once Kd > dt (1 - Kp) / 2, any Kd
+    // at small steps). Solved for q_new with a = Kd/dt, the error shrinks by (a - Kp)/(1 + a) per
+    // step whatever the step; Kd then acts as a lag of time constant Kd/(1 + Kp).
+    const double a = spec_.kd / dt;
+    c.position = (c.reference + spec_.kp * c.error + spec_.kd * c.reference_velocity + a * tip_position) / (1.0 + a);
     c.velocity = (c.position - tip_position) / dt;
     // Reported actuation force (paper III.B): what drives the tip along its commanded motion.
     const double speed = c.velocity.norm();

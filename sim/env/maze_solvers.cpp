@@ -133,6 +133,20 @@ GridMaze grid_from_walls(const MazeSpec& spec) {
   }
   m.start = m.cell_at(spec.start);
   m.goal = m.cell_at(spec.goal);
+  // The path also runs from the start to its cell's centre and from the goal cell's centre to the
+  // goal. A cell wider than the channels puts a wall across those legs: with one cell, start and
+  // goal share it and the path went straight through every wall between them.
+  const std::pair<Vec2, Cell> ends[] = {{spec.start, m.start}, {spec.goal, m.goal}};
+  for (const auto& [point, cell] : ends)
+    for (const auto& w : spec.walls)
+      if (segment_distance(point, m.centre(cell), w.a, w.b) <= 0.5 * w.thickness + touch) {
+        std::ostringstream msg;
+        msg << "/maze/grid_pitch: expected path cells no wider than the channels, got " << spec.grid_pitch
+            << " m: the wall from (" << w.a.x() << ", " << w.a.y() << ") to (" << w.b.x() << ", " << w.b.y()
+            << ") lies between (" << point.x() << ", " << point.y() << ") and the centre of its " << px << " m x "
+            << py << " m cell";
+        throw InputError(msg.str());
+      }
   if (solve_breadth_first(m).empty()) {
     std::ostringstream msg;
     msg << "/maze: expected start (" << spec.start.x() << ", " << spec.start.y() << ") and goal (" << spec.goal.x()

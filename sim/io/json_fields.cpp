@@ -123,7 +123,10 @@ void FieldReader::fail(const std::string& key, const std::string& expected, cons
   throw InputError(file_ + ": " + pointer_of(key) + ": expected " + expected + ", got " + describe(got));
 }
 
-bool FieldReader::has(const std::string& key) const { return object_ && object_->contains(key); }
+bool FieldReader::has(const std::string& key) const {
+  known_.insert(key);  // asked about, so known: an "unknown key" error lists it among the valid ones
+  return object_ && object_->contains(key);
+}
 
 const json* FieldReader::lookup(const std::string& key) {
   known_.insert(key);

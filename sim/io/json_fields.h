@@ -51,7 +51,7 @@ class FieldReader {
   const nlohmann::json* object_;  // null for an absent optional object
   std::string file_;
   std::string pointer_;
-  std::set<std::string> known_;
+  mutable std::set<std::string> known_;  // keys read or asked about (has)
 };
 
 // Short rendering of a JSON value for messages ("0", "\"abc\"", "an object", ...); never dumps

@@ -65,9 +65,11 @@ void read_control(FieldReader& in, ControlSpec& out) {
                                    : ActuationMode::kForce;
   if (in.has("advance")) read_advance(in, out.advance);
   out.kp = in.number("kp", out.kp, 0.0, 1e9);
-  out.kd = in.number("kd", out.kd, 0.0, 1e9);
+  // Kinematic mode's Kd is a lag in s, not force mode's N s/m: the force modes' default would
+  // slow the imposed tip by a time constant of a quarter second, so there it defaults to none.
+  out.kd = in.number("kd", out.mode == ActuationMode::kKinematic && !in.has("kd") ? 0.0 : out.kd, 0.0, 1e9);
   if (out.mode == ActuationMode::kKinematic && out.kp > 1.0)
-    in.fail("kp", "a number in [0, 1] in kinematic mode (the share of the position error corrected per step)",
+    in.fail("kp", "a number in [0, 1] in kinematic mode (the command is the reference plus Kp times the position error)",
             json(out.kp));
   out.actuated_nodes = static_cast<int>(in.integer("actuated_nodes", out.actuated_nodes, 1, 3));
   out.magnet_moment = in.number("magnet_moment", out.magnet_moment, 0.0, 1e6);
@@ -77,15 +79,19 @@ void read_control(FieldReader& in, ControlSpec& out) {
   const std::string kind = d.choice("kind", out.disturbance.kind == DisturbanceKind::kPosition ? "position" : "force",
                                     {"force", "position"});
   out.disturbance.kind = kind == "position" ? DisturbanceKind::kPosition : DisturbanceKind::kForce;
+  if (out.disturbance.kind == DisturbanceKind::kPosition && out.mode != ActuationMode::kKinematic)
+    d.fail("kind", "\"force\" in " + mode + " mode (\"position\" offsets the tip that kinematic mode imposes; "
+                   "no other mode imposes one)", json(kind));
   out.disturbance.amplitude = d.number("amplitude", out.disturbance.amplitude, 0.0, 1e6);
   out.disturbance.omega = d.number("omega", out.disturbance.omega, 0.0, 1e6);
   const Vec2 direction = d.vec2("direction", out.disturbance.direction);
-  if (direction.norm() < 1e-12) d.fail("direction", "a non-zero vector [x, y]", to_json(direction));
-  // Normalised, but a vector already of unit length (to rounding) is kept as written: dividing
-  // it by its norm can move its last bit, and the canonical text a log stores must read back
-  // to itself.
-  out.disturbance.direction =
-      std::abs(direction.norm() - 1.0) <= 4 * std::numeric_limits<double>::epsilon() ? direction : direction.normalized();
+  if (direction.isZero(0.0)) d.fail("direction", "a non-zero vector [x, y]", to_json(direction));
+  // Normalised (stably: [1e200, 1e200] has no finite plain norm, [1e-200, 1e-200] a zero one),
+  // but a vector already of unit length (to rounding) is kept as written: dividing it by its norm
+  // can move its last bit, and the canonical text a log stores must read back to itself.
+  out.disturbance.direction = std::abs(direction.norm() - 1.0) <= 4 * std::numeric_limits<double>::epsilon()
+                                  ? direction
+                                  : direction.stableNormalized();
   d.finish();
   in.finish();
 }

@@ -24,8 +24,10 @@ WallSegment read_wall(const json& item, const std::string& file, const std::stri
 
 void read_maze(FieldReader& in, MazeSpec& out) {
   const bool has_walls = in.has("walls");
-  out.width = in.positive("width", out.width, 1e3);
-  out.height = in.positive("height", out.height, 1e3);
+  // From 1 mm: a smaller maze has no room for a lumen the reader can accept (a width of 1e-308
+  // left /maze/lumen_width an empty range).
+  out.width = in.number("width", out.width, 1e-3, 1e3);
+  out.height = in.number("height", out.height, 1e-3, 1e3);
   if (has_walls) {
     for (const char* key : {"rows", "cols", "seed", "lumen_width"})
       if (in.has(key))

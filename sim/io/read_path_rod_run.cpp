@@ -11,7 +11,8 @@ void read_path(FieldReader& in, PathSpec& out) {
                                        {"wall_follower", "bfs"});
   out.solver = solver == "bfs" ? PathSolver::kBreadthFirst : PathSolver::kWallFollower;
   out.corner_radius = in.number("corner_radius", out.corner_radius, 0.0, 1e3);
-  out.speed = in.positive("speed", out.speed, 1e3);
+  // From 1 nm/s: slower, a route's duration overflows (1e-308 m/s made it infinite).
+  out.speed = in.number("speed", out.speed, 1e-9, 1e3);
   out.ramp_time = in.number("ramp_time", out.ramp_time, 0.0, 1e6);
   in.finish();
 }

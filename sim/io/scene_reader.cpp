@@ -70,6 +70,10 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
       if (scene.loads.point_loads[i].profile != LoadProfile::kConstant)
         io::FieldReader(root["loads"]["point"][i], in.file(), "/loads/point/" + std::to_string(i))
             .fail("profile", "\"constant\" with solver mode \"static\"", root["loads"]["point"][i]["profile"]);
+  // A prescribed velocity moves a node in time; an equilibrium would hold it where it starts.
+  if (scene.solver.mode == SolveMode::kStatic && !scene.boundary.prescribed.empty())
+    in.object("boundary").fail("prescribed", "[] with solver mode \"static\" (no motion in an equilibrium; hold the node with \"pinned\")",
+                               root["boundary"]["prescribed"]);
   // The static solver factorises the band only; self-contact's entries lie beyond it.
   if (scene.contact.self && scene.solver.mode == SolveMode::kStatic)
     in.object("contact").fail("self", "false with solver mode \"static\" (self-contact needs the dynamic solver)",

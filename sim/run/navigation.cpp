@@ -41,6 +41,14 @@ void refuse_what_does_not_fit(const Scene& scene, const Navigation& nav, const M
     }
   }
   const double gap = nav.contact_geometry->min_gap(model.rod.x_initial, std::max(env.lumen_width, diameter));
+  if (gap <= 0.0 && scene.environment == EnvironmentKind::kVessels) {
+    std::snprintf(text, sizeof text,
+                  ": /vessels: the rod starts %g mm inside a wall: it lies straight behind the start along the "
+                  "inlet for its length (%g m); choose a start where the vessel runs straight into the network "
+                  "(for a mask, /vessels/mask/start on the inlet) or a shorter rod",
+                  -1e3 * gap, scene.rod.length);
+    throw InputError(label_of(scene) + text);
+  }
   if (gap <= 0.0) {
     std::snprintf(text, sizeof text,
                   ": /maze: the rod starts %g mm inside a wall: it lies straight behind the start for its length "

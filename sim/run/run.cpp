@@ -47,6 +47,11 @@ Run::Run(std::shared_ptr<const Model> model)
       for (const auto& point : scene_.control.advance.points)  // the feed's speed jumps there
         if (point.first > 2e-9) breakpoints_.push_back(point.first - 1e-9);
       std::sort(breakpoints_.begin(), breakpoints_.end());
+      // Two jumps at one time (the reference's ramp ending as the feed stops) are one breakpoint:
+      // a second would ask for a step of length 0.
+      breakpoints_.erase(std::unique(breakpoints_.begin(), breakpoints_.end(),
+                                     [](double a, double b) { return b - a < 2e-9; }),
+                         breakpoints_.end());
     }
   }
   const std::uint32_t node_values = static_cast<std::uint32_t>(2 * n);
@@ -399,6 +404,7 @@ bool Run::run(FrameSink& sink, const std::function<void(double)>& progress) {
       // Error control steps over output times (their frames come from the step's interpolant,
       // sim/step/dense_output.h) but ends a step where the controller's inputs jump
       // (breakpoints_) and at the end of the run, halving the distance rather than leave a sliver.
+      while (next_break < breakpoints_.size() && breakpoints_[next_break] <= state_.t * (1.0 + 1e-12)) ++next_break;
       const bool at_break = next_break < breakpoints_.size() && breakpoints_[next_break] < duration;
       const double stop = at_break ? breakpoints_[next_break] : duration;
       const double remaining = stop - state_.t;

@@ -343,7 +343,7 @@ struct ControlSpec {
   ActuationMode mode = ActuationMode::kForce;
   AdvanceSpec advance;
   double kp = 4.0;               // force mode: N/m; kinematic mode: - (fraction of the error corrected)
-  double kd = 0.4;               // force mode: N s/m; kinematic mode: s
+  double kd = 0.4;               // force mode: N s/m; kinematic mode: s (the reader defaults it to 0 there)
   int actuated_nodes = 1;        // 1..3: force spread over this many nodes from the tip (the magnet's length)
   double magnet_moment = 1e-3;   // A m^2, field mode: tip dipole along the tip tangent (m B L / EI ~ 0.6)
   double field_strength = 0.02;  // T, field mode: |B|
