@@ -46,12 +46,15 @@ DiffStats diff_images(const Image& a, const Image& b, int tolerance, Image* heat
   // Alpha counts as a fourth channel when either image has any pixel not opaque (once it was
   // dropped on reading, and a half-transparent picture compared equal to its opaque original).
   const int channels = a.alpha.empty() && b.alpha.empty() ? 3 : 4;
-  const auto alpha = [](const Image& i, long p) { return i.alpha.empty() ? 255 : int(i.alpha[static_cast<std::size_t>(p)]); };
+  const auto alpha = [](const Image& i, long p) {
+    return i.alpha.empty() ? 255 : int(i.alpha[static_cast<std::size_t>(p)]);
+  };
   double sum = 0, sum_sq = 0;
   for (long p = 0; p < s.pixels; ++p) {
     int worst = 0;
     for (int k = 0; k < channels; ++k) {
-      const int d = k < 3 ? std::abs(int(a.rgb[3 * p + k]) - int(b.rgb[3 * p + k])) : std::abs(alpha(a, p) - alpha(b, p));
+      const int d = k < 3 ? std::abs(int(a.rgb[3 * p + k]) - int(b.rgb[3 * p + k]))
+                          : std::abs(alpha(a, p) - alpha(b, p));
       worst = std::max(worst, d);
       sum += d;
       sum_sq += double(d) * d;

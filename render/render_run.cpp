@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -15,6 +14,7 @@
 #include "render/tip_trail.h"
 #include "render/video_encoder.h"
 #include "render/view_frame.h"
+#include "sim/io/json_fields.h"
 #include "sim/io/output_file.h"
 #include "sim/scene/input_error.h"
 
@@ -45,12 +45,6 @@ void validate_render_options(const RenderOptions& o) {
 
 namespace {
 
-std::string seconds(double t) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", t);
-  return text;
-}
-
 // A frame over the canvas's limits (Canvas::kMaxShapes: a log whose path, walls or lumen has
 // millions of points) is drawn incomplete; the report says so rather than nothing.
 std::string dropped_note(const Canvas& canvas) {
@@ -62,7 +56,6 @@ std::string dropped_note(const Canvas& canvas) {
 
 // `vascsim render RUN --still T --png FILE`: one view, the same pixels the replay server sends.
 RenderReport render_still(const FrameSource& source, const RenderOptions& o) {
-  std::error_code ec;
   check_replaceable_output(o.png_path, o.force, source.run_files());
   remove_stale_temporaries(fs::path(o.png_path).parent_path().string());
   std::unique_ptr<FrameSource> overlay;
@@ -128,8 +121,10 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   // that its first and last frames alone make look right.
   source.check_times(source.frame_count());
   const auto outside = [&](double t) { return t < source.first_time() || t > source.last_time(); };
-  const std::string span = " (the log spans " + seconds(source.first_time()) + " .. " + seconds(source.last_time()) + " s)";
-  if (o.still && outside(*o.still)) throw InputError("--still " + seconds(*o.still) + ": no frame at that time" + span);
+  const std::string span =
+      " (the log spans " + io::format_number(source.first_time()) + " .. " + io::format_number(source.last_time()) + " s)";
+  if (o.still && outside(*o.still))
+    throw InputError("--still " + io::format_number(*o.still) + ": no frame at that time" + span);
   if ((o.from && *o.from > source.last_time()) || (o.to && *o.to < source.first_time()))
     throw InputError("--from/--to: no frame in the time range" + span);
   if (o.still) return render_still(source, o);
@@ -144,7 +139,6 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   if (t1 < t0) throw InputError("time range [" + std::to_string(t0) + ", " + std::to_string(t1) + "] s is empty");
 
   // Refuse to overwrite before doing any work.
-  std::error_code ec;
   if (!o.mp4_path.empty()) check_replaceable_output(o.mp4_path, o.force, source.run_files());
   // What a killed render left here under temporary names goes first (sim/io/output_file.h).
   if (!o.mp4_path.empty()) remove_stale_temporaries(fs::path(o.mp4_path).parent_path().string());

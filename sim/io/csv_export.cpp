@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "sim/io/json_fields.h"
 #include "sim/io/output_file.h"
 #include "sim/scene/input_error.h"
 
@@ -16,12 +17,6 @@ void put(std::string& out, double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", v);
   out += text;
-}
-
-std::string seconds(double t) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", t);
-  return text;
 }
 
 std::string header_of(const LogChannel& c) {
@@ -79,8 +74,9 @@ std::vector<std::string> export_csv(const FrameLogReader& log, const std::string
     if (kept++ % std::max<std::size_t>(1, options.every) == 0) frames.push_back(f);
   }
   if (frames.empty())
-    throw InputError(log.path() + ": no frame in the time range [" + seconds(options.from) + ", " + seconds(options.to) +
-                     "] s (the log spans " + seconds(log.time_of(0)) + " .. " + seconds(previous) + " s)");
+    throw InputError(log.path() + ": no frame in the time range [" + io::format_number(options.from) + ", " +
+                     io::format_number(options.to) + "] s (the log spans " + io::format_number(log.time_of(0)) + " .. " +
+                     io::format_number(previous) + " s)");
 
   std::vector<std::size_t> offset(channels.size(), 1);  // in doubles, after the time
   for (std::size_t i = 1; i < channels.size(); ++i) offset[i] = offset[i - 1] + channels[i - 1].count;

@@ -198,9 +198,10 @@ void FrameLogReader::read_header() {
     if (layout > 2) throw InputError(path + ": corrupt frame log header (channel layout)");
     c.layout = static_cast<ChannelLayout>(layout);
     c.count = in.u32();
-    const std::uint32_t expected = c.layout == ChannelLayout::kNodeVectors ? 2 * header_.node_count
-                                   : c.layout == ChannelLayout::kVector    ? 2u
-                                                                           : std::max<std::uint32_t>(c.count, 1);
+    // 64 bits: twice a corrupt node count near 2^32 must not wrap to a small count that matches.
+    const std::uint64_t expected = c.layout == ChannelLayout::kNodeVectors ? 2ull * header_.node_count
+                                   : c.layout == ChannelLayout::kVector    ? 2ull
+                                                                           : std::max<std::uint64_t>(c.count, 1);
     if (c.count != expected)
       throw InputError(path + ": channel '" + c.name.substr(0, 64) + "' holds " + std::to_string(c.count) +
                        " values per frame, expected " + std::to_string(expected) +
