@@ -94,7 +94,7 @@ TEST(RenderCli, BadOptionsExit2) {
   ScratchDir dir("cli_options");
   const std::string run = testing::make_run(dir, SyntheticLogSpec{});
   for (const std::string opts : {"--width abc", "--camera sideways", "--fps 0", "--zoom -1", "--width 161 --height 120",
-                                 "--from 2 --to 1", "--bogus", ""}) {
+                                 "--from 2 --to 1", "--bogus", "--width 320 --width 640", "--speed 0x10", ""}) {
     const std::string args = opts.empty() ? "render" : "render '" + run + "' " + opts;
     const auto r = run_vascsim(args, dir);
     EXPECT_EQ(r.exit_code, 2) << opts << ": " << r.err;

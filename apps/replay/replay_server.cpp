@@ -94,16 +94,14 @@ struct ReplayServer::Impl {
       if (!h.empty() && h[0] == '[') return h.substr(0, h.find(']') + 1);
       return h.substr(0, h.find(':'));
     };
-    const auto loopback = [](const std::string& h) { return h == "127.0.0.1" || h == "localhost" || h == "[::1]"; };
-    if (!loopback(host_of(req.get_header_value("Host")))) return false;
+    if (!is_loopback(host_of(req.get_header_value("Host")))) return false;
     const std::string origin = req.get_header_value("Origin");
-    return origin.empty() || loopback(host_of(origin));
+    return origin.empty() || is_loopback(host_of(origin));
   }
 
   bool authorised(const httplib::Request& req) const {
     if (!options.require_token) {
-      const bool on_loopback = options.host == "127.0.0.1" || options.host == "localhost" || options.host == "::1";
-      return !on_loopback || loopback_request(req);
+      return !is_loopback(options.host) || loopback_request(req);
     }
     if (req.has_param("token") && same_secret(req.get_param_value("token"), token)) return true;
     const std::string cookies = req.get_header_value("Cookie");
@@ -448,6 +446,10 @@ struct ReplayServer::Impl {
     });
   }
 };
+
+bool is_loopback(const std::string& host) {
+  return host == "127.0.0.1" || host == "localhost" || host == "::1" || host == "[::1]";
+}
 
 ReplayServer::ReplayServer(const ReplayOptions& options) : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;

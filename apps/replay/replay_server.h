@@ -12,6 +12,10 @@
 
 namespace vascsim::replay {
 
+// Whether `host` (a --host value, or a Host or Origin header's host with IPv6 in brackets) names
+// this machine's loopback: 127.0.0.1, localhost, ::1.
+bool is_loopback(const std::string& host);
+
 struct ReplayOptions {
   std::vector<std::string> runs;   // one or two run directories or frame log files
   std::string host = "127.0.0.1";  // address to bind

@@ -57,7 +57,7 @@ int run_replay_command(int argc, char** argv) {
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
   replay::ReplayServer server(o);
-  if (o.host != "127.0.0.1" && o.host != "localhost" && o.host != "::1")
+  if (!replay::is_loopback(o.host))
     std::fprintf(stderr, "vascsim replay: listening on %s: anyone who can reach this address %s\n", o.host.c_str(),
                  o.require_token ? "and has the token can see these runs" : "can see these runs (no token!)");
   std::printf("replay: %s\n", server.url().c_str());
