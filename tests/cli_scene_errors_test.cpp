@@ -39,7 +39,17 @@ const BadScene kBadScenes[] = {
     {"walls_and_rows", R"({"maze": {"rows": 3, "walls": [{"from": [0, 0], "to": [1, 0]}]}})",
      "/maze/rows: expected no generator settings beside an explicit \"walls\" list, got 3"},
     {"wall_point", R"({"maze": {"walls": [{"from": [0, 0], "to": [1]}]}})",
-     "/maze/walls/0/to: expected an array of 2 finite numbers [x, y], got [1]"},
+     "/maze/walls/0/to: expected an array of 2 numbers [x, y] in [-1000, 1000], got [1]"},
+    // Extreme values that used to pass the reader and fail at the first step as "the rod blew up"
+    // (exit 1, as a diverging run) instead of an input error naming the field.
+    {"start_far_away", R"({"maze": null, "shape": {"start": [1e20, 0]}})",
+     "/shape/start: expected an array of 2 numbers [x, y] in [-1000, 1000], got [1e+20,0]"},
+    {"gravity_huge", R"({"maze": null, "loads": {"gravity": {"acceleration": [0, -1e300]}}})",
+     "/loads/gravity/acceleration: expected an array of 2 numbers [x, y] in [-10000, 10000], got [0,-1e+300]"},
+    {"rod_length_subnormal", R"({"maze": null, "rod": {"length": 1e-308}})",
+     "/rod/length: expected a number in [1e-06, 1000], got 1e-308"},
+    {"point_force_huge", R"({"maze": null, "loads": {"point": [{"node": -1, "force": [1e300, 0]}]}})",
+     "/loads/point/0/force: expected an array of 2 numbers [x, y] in [-1000000, 1000000], got [1e+300,0]"},
     {"wall_missing_to", R"({"maze": {"walls": [{"from": [0, 0]}]}})", "/maze/walls/0/to: expected a point [x, y], got null"},
     {"start_outside", R"({"maze": {"walls": [{"from": [0, 0], "to": [1, 0]}], "start": [2, 0.5]}})",
      "/maze/start: expected a point inside the maze bounds, got [2.0,0.5]"},

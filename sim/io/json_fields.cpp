@@ -199,13 +199,15 @@ std::string FieldReader::text(const std::string& key, const std::string& fallbac
   return v->get<std::string>();
 }
 
-Vec2 FieldReader::vec2(const std::string& key, const Vec2& fallback) {
+Vec2 FieldReader::vec2(const std::string& key, const Vec2& fallback, double max_abs) {
   const json* v = lookup(key);
   if (!v) return fallback;
-  const std::string expected = "an array of 2 finite numbers [x, y]";
+  const std::string expected =
+      max_abs < 1e300 ? "an array of 2 numbers [x, y] in [-" + format_number(max_abs) + ", " + format_number(max_abs) + "]"
+                      : "an array of 2 finite numbers [x, y]";
   if (!v->is_array() || v->size() != 2 || !(*v)[0].is_number() || !(*v)[1].is_number()) fail(key, expected, *v);
   Vec2 p((*v)[0].get<double>(), (*v)[1].get<double>());
-  if (!p.allFinite()) fail(key, expected, *v);
+  if (!p.allFinite() || p.cwiseAbs().maxCoeff() > max_abs) fail(key, expected, *v);
   return p;
 }
 

@@ -32,7 +32,9 @@ class FieldReader {
   bool boolean(const std::string& key, bool fallback);
   std::string choice(const std::string& key, const std::string& fallback, const std::vector<std::string>& allowed);
   std::string text(const std::string& key, const std::string& fallback);
-  Vec2 vec2(const std::string& key, const Vec2& fallback);
+  // Each coordinate within [-max_abs, max_abs] (a position far from the origin leaves no digits
+  // for the rod's edges; a huge force or acceleration overflows before the first step).
+  Vec2 vec2(const std::string& key, const Vec2& fallback, double max_abs = 1e300);
   // A nested object: the returned reader is empty (every lookup falls back) when the key is absent.
   FieldReader object(const std::string& key);
   // The raw value of a field that the caller validates itself, marking it as known.

@@ -55,8 +55,8 @@ void read_boundary(FieldReader& in, BoundarySpec& out) {
       FieldReader item((*list)[i], in.file(), in.pointer_of("prescribed/" + std::to_string(i)));
       PrescribedMotionSpec p;
       p.node = read_node(item, "node", p.node);
-      p.velocity = item.vec2("velocity", p.velocity);
-      p.amplitude = item.vec2("amplitude", p.amplitude);
+      p.velocity = item.vec2("velocity", p.velocity, kMaxSpeed);
+      p.amplitude = item.vec2("amplitude", p.amplitude, kMaxCoordinate);
       p.frequency = item.number("frequency", p.frequency, 0.0, 1e6);
       item.finish();
       out.prescribed.push_back(p);

@@ -20,7 +20,7 @@ void read_loads(FieldReader& in, LoadSpec& out) {
   {
     FieldReader g = in.object("gravity");
     out.gravity.enabled = g.boolean("enabled", out.gravity.enabled);
-    out.gravity.acceleration = g.vec2("acceleration", out.gravity.acceleration);
+    out.gravity.acceleration = g.vec2("acceleration", out.gravity.acceleration, kMaxAcceleration);
     g.finish();
   }
   {
@@ -74,7 +74,7 @@ void read_loads(FieldReader& in, LoadSpec& out) {
       FieldReader item((*list)[i], in.file(), in.pointer_of("point/" + std::to_string(i)));
       PointLoadSpec p;
       p.node = static_cast<int>(item.integer("node", p.node, -1000000, 999999));
-      p.force = item.vec2("force", p.force);
+      p.force = item.vec2("force", p.force, kMaxForce);
       p.moment = item.number("moment", p.moment, -1e9, 1e9);
       const std::string profile = item.choice("profile", profile_name(p.profile), {"constant", "ramp", "sine"});
       p.profile = profile == "ramp" ? LoadProfile::kRamp : profile == "sine" ? LoadProfile::kSine : LoadProfile::kConstant;

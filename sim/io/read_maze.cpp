@@ -11,8 +11,8 @@ WallSegment read_wall(const json& item, const std::string& file, const std::stri
   WallSegment w;
   if (!in.has("from")) in.fail("from", "a point [x, y]", json());
   if (!in.has("to")) in.fail("to", "a point [x, y]", json());
-  w.a = in.vec2("from", w.a);
-  w.b = in.vec2("to", w.b);
+  w.a = in.vec2("from", w.a, kMaxCoordinate);
+  w.b = in.vec2("to", w.b, kMaxCoordinate);
   w.thickness = in.number("thickness", default_thickness, 0.0, 1e3);
   if ((w.a - w.b).norm() == 0.0 && w.thickness == 0.0)
     in.fail("to", "a point different from \"from\" (a wall of zero length and thickness is invisible)", item["to"]);
@@ -39,8 +39,8 @@ void read_maze(FieldReader& in, MazeSpec& out) {
     out.walls.clear();
     for (std::size_t i = 0; i < walls.size(); ++i)
       out.walls.push_back(read_wall(walls[i], in.file(), in.pointer_of("walls") + "/" + std::to_string(i), thickness));
-    out.start = in.vec2("start", out.start);
-    out.goal = in.vec2("goal", out.goal);
+    out.start = in.vec2("start", out.start, kMaxCoordinate);
+    out.goal = in.vec2("goal", out.goal, kMaxCoordinate);
     out.grid_pitch = in.positive("grid_pitch", out.grid_pitch, 1e3);
     const auto inside = [&](const Vec2& p) {
       return p.x() > 0 && p.y() > 0 && p.x() < out.width && p.y() < out.height;

@@ -27,8 +27,10 @@ json write_path(const PathSpec& spec) {
 
 void read_rod(FieldReader& in, RodSpec& out) {
   out.nodes = static_cast<int>(in.integer("nodes", out.nodes, 3, 1000000));
-  out.length = in.positive("length", out.length, 1e3);
-  out.outer_radius = in.positive("outer_radius", out.outer_radius, 1.0);
+  // From 1 um and 0.1 um: below, an edge's length or cross-section underflows the solver's scale
+  // (a length of 1e-308 failed at the first step as "the rod blew up").
+  out.length = in.number("length", out.length, 1e-6, 1e3);
+  out.outer_radius = in.number("outer_radius", out.outer_radius, 1e-7, 1.0);
   out.inner_radius = in.number("inner_radius", std::min(out.inner_radius, 0.5 * out.outer_radius), 0.0, 1.0);
   if (out.inner_radius >= out.outer_radius)
     in.fail("inner_radius", "a number in [0, outer_radius = " + format_number(out.outer_radius) + ")",

@@ -5,7 +5,7 @@ namespace vascsim::io {
 using nlohmann::json;
 
 void read_shape(FieldReader& in, ShapeSpec& out) {
-  out.start = in.vec2("start", out.start);
+  out.start = in.vec2("start", out.start, kMaxCoordinate);
   out.direction = in.number("direction", out.direction, -1e3, 1e3);
   out.initial_curvature = in.number("initial_curvature", out.initial_curvature, -1e6, 1e6);
   out.rest_curvature = in.number("rest_curvature", out.rest_curvature, -1e6, 1e6);

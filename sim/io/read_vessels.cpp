@@ -39,10 +39,6 @@ std::vector<Item> read_list(FieldReader& in, const std::string& key, const char*
   return out;
 }
 
-// Vessel geometry lies within 1000 m of the origin on each axis, as radii and lengths are at
-// most 1000 m: the lumen is built on a 0.1 um integer grid (sim/env/vessel_lumen.cpp), which a
-// point far beyond that would overflow.
-constexpr double kMaxCoordinate = 1e3;  // m
 constexpr const char* kPointWithinBounds = "a point [x, y] (m) with |x|, |y| <= 1000";
 constexpr const char* kPointsWithinBounds = "points [x, y] (m) with |x|, |y| <= 1000";
 bool within_bounds(const Vec2& p) { return std::abs(p.x()) <= kMaxCoordinate && std::abs(p.y()) <= kMaxCoordinate; }
@@ -109,8 +105,8 @@ void read_vessels(FieldReader& in, VesselsSpec& out) {
     const std::string pixel_hash = read_mask(mask, out.mask);
     for (const char* key : {"start", "goal"})
       if (!in.has(key)) in.fail(key, "a point [x, y] (m) inside the mask's lumen", json());
-    out.mask.start = in.vec2("start", out.mask.start);
-    out.mask.goal = in.vec2("goal", out.mask.goal);
+    out.mask.start = in.vec2("start", out.mask.start, kMaxCoordinate);
+    out.mask.goal = in.vec2("goal", out.mask.goal, kMaxCoordinate);
     in.finish();
     out.mask.grey = load_mask_pixels(out.mask, in.file(), in.pointer_of("mask") + "/file");
     if (!pixel_hash.empty() && pixel_hash != out.mask.pixel_hash)

@@ -14,6 +14,17 @@ class Trajectory;
 
 namespace vascsim::io {
 
+// Scene geometry lies within 1000 m of the origin on each axis, as lengths and radii are at most
+// 1000 m: a vessel lumen is built on a 0.1 um integer grid (sim/env/vessel_lumen.cpp), which a
+// point far beyond would overflow, and a rod far from the origin has no digits left for its
+// edges (a start at 1e20 m made every edge zero and the first step fail).
+inline constexpr double kMaxCoordinate = 1e3;  // m
+// Loads are bounded so that they stay finite once multiplied out (1e300 overflowed before the
+// first step), far beyond any physical use.
+inline constexpr double kMaxAcceleration = 1e4;  // m/s^2, about 1000 g
+inline constexpr double kMaxForce = 1e6;         // N
+inline constexpr double kMaxSpeed = 1e3;         // m/s
+
 void read_maze(FieldReader& in, MazeSpec& out);
 void read_vessels(FieldReader& in, VesselsSpec& out);
 // The mask's pixels, from spec.resolved; fills width, height and pixel_hash. An InputError naming
