@@ -62,6 +62,16 @@ TEST(SweepCli, RunsEveryEntryInItsOwnDirectoryAndMerges) {
   ASSERT_EQ(again.exit_code, 0) << again.output;
   EXPECT_EQ(deterministic_columns(read_text(dir + "/again/results.csv")), deterministic_columns(csv));
   EXPECT_NE(read_text(dir + "/again/results.csv"), csv) << "the timing columns should differ (they are measured)";
+
+#ifdef VASCSIM_HAVE_RENDER
+  // A merge without plots takes the earlier merge's figures away (they would show other results
+  // beside the new tables), and only with --force, as it replaces the tables.
+  EXPECT_EQ(sweep_command("merge " + dir + "/out --no-plots").exit_code, 2);
+  EXPECT_TRUE(fs::exists(dir + "/out/plots/control_kp.png"));
+  const CommandResult tables_only = sweep_command("merge " + dir + "/out --no-plots --force");
+  ASSERT_EQ(tables_only.exit_code, 0) << tables_only.output;
+  for (const char* f : {"plots/control_kp.png", "plots/maze_seed.png"}) EXPECT_FALSE(fs::exists(dir + "/out/" + f)) << f;
+#endif
 }
 
 TEST(SweepCli, ResumesSkippingCompletedRunsAndRerunsOnlyWhatIsMissing) {
@@ -209,7 +219,8 @@ TEST(SweepCli, RunIndexAndShardSelectEntries) {
   EXPECT_TRUE(has(shard.output, "ran 3 of 3 runs (0 completed before")) << shard.output;  // 1, 4, 7
   for (int i = 0; i < 8; ++i)
     EXPECT_EQ(fs::exists(dir + "/out/runs/000" + std::to_string(i) + "/summary.json"), i % 3 == 1 || i == 6) << i;
-  EXPECT_EQ(sweep_command(dir + "/out --shard 3/3").exit_code, 2);
+  for (const char* bad : {"3/3", "' 0/3'", "+0/3", "0/3x", "0/0"})
+    EXPECT_EQ(sweep_command(dir + "/out --shard " + bad).exit_code, 2) << bad;
 
   // Merging now: the runs not yet made are rows that say so.
   const CommandResult merge = sweep_command("merge " + dir + "/out --no-plots");

@@ -147,17 +147,32 @@ MergeReport merge_sweep(const SweepDirectory& sweep, bool force, bool plots) {
   const std::string csv = (dir / "results.csv").string(), json = (dir / "results.json").string();
   const fs::path plot_dir = dir / "plots";
   const std::vector<std::string> figures = figure_paths(m, plot_dir);
-  // Every refusal before anything is written, so a refused merge changes nothing.
+#ifdef VASCSIM_HAVE_RENDER
+  const bool drawing = plots;
+#else
+  const bool drawing = false;
+#endif
+  // Every refusal before anything is written, so a refused merge changes nothing. Figures of an
+  // earlier merge are replaced, or removed when this one draws none: left beside the new tables
+  // they would show results that are no longer there.
   check_replaceable_output(csv, force, {});
   check_replaceable_output(json, force, {});
-#ifdef VASCSIM_HAVE_RENDER
-  if (plots) {
+  if (drawing) {
     std::error_code ec;
     fs::create_directories(plot_dir, ec);
     if (ec) throw InputError(plot_dir.string() + ": cannot create directory (" + ec.message() + ")");
-    for (const auto& f : figures) check_replaceable_output(f, force, {});
   }
-#endif
+  std::vector<std::string> stale;
+  for (const auto& f : figures) {
+    std::error_code ec;
+    if (!drawing && fs::symlink_status(f, ec).type() == fs::file_type::not_found) continue;
+    check_replaceable_output(f, force, {});
+    if (!drawing) stale.push_back(f);
+  }
+  for (const auto& f : stale) {
+    std::error_code ec;
+    if (fs::remove(f, ec); ec) throw InputError(f + ": cannot remove the figure of an earlier merge (" + ec.message() + ")");
+  }
   std::vector<RunOutcome> outcomes;
   outcomes.reserve(m.runs.size());
   MergeReport report;
@@ -170,7 +185,7 @@ MergeReport merge_sweep(const SweepDirectory& sweep, bool force, bool plots) {
   write_file_atomically(json, sweep_results_json(m, outcomes));
   report.written = {csv, json};
 #ifdef VASCSIM_HAVE_RENDER
-  if (plots) {
+  if (drawing) {
     const std::vector<std::size_t> metrics = headline_metrics(outcomes);
     for (std::size_t k = 0; k < m.axes.size(); ++k) {
       render::write_sweep_figure(figure_of(m, outcomes, k, metrics), figures[k], 1600, 1100);

@@ -71,7 +71,9 @@ void print_usage() {
 void parse_shard(const std::string& text, std::size_t& i, std::size_t& n) {
   const auto slash = text.find('/');
   try {
-    if (slash == std::string::npos) throw std::invalid_argument("");
+    // Digits only: stoll would also take " 0", "+0" or "0x1" (as 0).
+    if (slash == std::string::npos || text.find_first_not_of("0123456789/") != std::string::npos)
+      throw std::invalid_argument("");
     std::size_t used = 0;
     const long long a = std::stoll(text.substr(0, slash), &used);
     if (used != slash) throw std::invalid_argument("");
