@@ -118,6 +118,7 @@ TEST(RenderView, BadViewOptionsExit2NamingTheOption) {
       {"--still 0.5 --png X --hide nope", "nope"},
       {"--still 0.5 --png X --camera center", "--center"},
       {"--still 0.5 --png X --center 1", "center"},
+      {"--still 0.5 --png X --camera follow --center 0.1,0.1", "--center goes with --camera center"},
       {"--still 0.5 --png X --camera orbit", "camera"},
       {"--still 0.5", "--png"},
       {"--png X", "--still"},

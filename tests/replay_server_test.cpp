@@ -115,6 +115,20 @@ TEST(ReplayServer, RequestsWithoutTheTokenAreForbidden) {
   // Nothing outside the run and the page: no path reaches the file system.
   EXPECT_EQ(s.get("/../../etc/passwd")->status, 404);
   EXPECT_EQ(s.get("/frames.vlog")->status, 404);
+  // A known path asked with a method it does not take is a 405 that names the ones it does.
+  const auto get_export = s.get("/api/export");
+  ASSERT_TRUE(get_export);
+  EXPECT_EQ(get_export->status, 405);
+  EXPECT_EQ(get_export->get_header_value("Allow"), "POST");
+  const auto post_run = s.post("/api/run", "{}");
+  ASSERT_TRUE(post_run);
+  EXPECT_EQ(post_run->status, 405);
+  EXPECT_EQ(post_run->get_header_value("Allow"), "GET, HEAD");
+  const auto delete_bookmarks = s.client().Delete(s.authorised("/api/bookmarks").c_str());
+  ASSERT_TRUE(delete_bookmarks);
+  EXPECT_EQ(delete_bookmarks->status, 405);
+  EXPECT_EQ(delete_bookmarks->get_header_value("Allow"), "GET, HEAD, POST");
+  EXPECT_EQ(s.post("/api/nowhere", "{}")->status, 404);
 }
 
 TEST(ReplayServer, NoTokenModeServesWithoutOne) {
@@ -148,6 +162,7 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
       {"/api/frame.png?camera=center", "center"},
       {"/api/frame.png?center=1", "center"},
       {"/api/frame.png?center=1,nan", "center"},
+      {"/api/frame.png?camera=fit&center=0.1,0.1", "center"},  // the centre was ignored
       {"/api/frame.png?layers=walls,bogus", "layers"},
       {"/api/frame.png?run=b", "run"},
       {"/api/frame.png?run=../../etc", "run"},
@@ -162,6 +177,9 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
       {"/api/export/status?id=99", "id"},
       {"/api/export/status?id=abc", "id"},
       {"/api/export/file?id=1", "id"},
+      {"/api/export/status", "id"},         // was "no such export", as if id=0 had been asked for
+      {"/api/frame.png?zoom=0x2", "zoom"},  // strtod read 2
+      {"/api/frame.png?width=%20400", "width"},
   };
   for (const auto& [query, parameter] : cases) {
     const json body = get_json(s, query, 400);
@@ -172,6 +190,10 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
   ASSERT_TRUE(odd);
   EXPECT_EQ(odd->status, 400);
   EXPECT_EQ(json::parse(odd->body)["parameter"], "width");
+  const auto no_body = s.post("/api/bookmarks", "");
+  ASSERT_TRUE(no_body);
+  EXPECT_EQ(no_body->status, 400);
+  EXPECT_EQ(json::parse(no_body->body)["error"], "body: empty; expected JSON {\"name\", \"t\", \"view\"}");
   const auto bad_bookmark = s.post("/api/bookmarks", "{\"name\": \"\", \"t\": 1}");
   ASSERT_TRUE(bad_bookmark);
   EXPECT_EQ(bad_bookmark->status, 400);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <random>
 
@@ -56,6 +57,12 @@ void send_error(httplib::Response& res, int status, const std::string& message, 
   json body = {{"error", message.substr(0, 2000)}};
   if (!parameter.empty()) body["parameter"] = parameter;
   send_json(res, body, status);
+}
+
+// The id a started export was given (POST /api/export): required, not defaulted.
+int export_id(const RequestParams& p) {
+  if (!p.text("id")) throw ParamError("id", "required: the id that POST /api/export returned");
+  return static_cast<int>(p.integer("id", 0, 1, 1 << 30));
 }
 
 const char* content_type(const std::string& name) {
@@ -282,6 +289,7 @@ struct ReplayServer::Impl {
     json list;
     if (add) {
       json body;
+      if (req.body.empty()) throw ParamError("body", "empty; expected JSON {\"name\", \"t\", \"view\"}");
       try {
         body = io::parse_json_strictly(req.body, "request body");
       } catch (const InputError& e) {
@@ -327,14 +335,14 @@ struct ReplayServer::Impl {
 
   void export_status(const httplib::Request& req, httplib::Response& res) {
     const RequestParams p(req.params);
-    const auto s = exports.status(static_cast<int>(p.integer("id", 0, 1, 1 << 30)));
+    const auto s = exports.status(export_id(p));
     if (!s) throw ParamError("id", "no such export");
     send_json(res, *s);
   }
 
   void export_file(const httplib::Request& req, httplib::Response& res) {
     const RequestParams p(req.params);
-    const auto path = exports.file(static_cast<int>(p.integer("id", 0, 1, 1 << 30)));
+    const auto path = exports.file(export_id(p));
     if (!path) throw ParamError("id", "no finished export with this id");
     auto in = std::make_shared<std::ifstream>(*path, std::ios::binary);
     if (!*in) throw InputError(*path + ": cannot read the exported video");
@@ -390,6 +398,21 @@ struct ReplayServer::Impl {
     }
   }
 
+  // Each path and the methods it answers, for a 405 (not a 404) when it is asked with another.
+  std::map<std::string, std::string> allowed_methods;
+  void get(const std::string& path, httplib::Server::Handler handler) {
+    http.Get(path, std::move(handler));
+    add_method(path, "GET, HEAD");
+  }
+  void post(const std::string& path, httplib::Server::Handler handler) {
+    http.Post(path, std::move(handler));
+    add_method(path, "POST");
+  }
+  void add_method(const std::string& path, const std::string& method) {
+    std::string& list = allowed_methods[path];
+    list += (list.empty() ? "" : ", ") + method;
+  }
+
   void routes() {
     http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
       // Nothing the page loads comes from elsewhere, and the token in the URL must not leak.
@@ -405,29 +428,37 @@ struct ReplayServer::Impl {
         send_error(res, 403, "Host or Origin is not this machine's loopback: a request from another site is refused");
       return httplib::Server::HandlerResponse::Handled;
     });
-    http.Get("/", [this](const httplib::Request& req, httplib::Response& res) { asset("index.html", req, res); });
+    get("/", [this](const httplib::Request& req, httplib::Response& res) { asset("index.html", req, res); });
     for (const auto& a : embedded_assets()) {
       if (a.name == "index.html") continue;
       const std::string name = a.name;
-      http.Get("/" + name, [this, name](const httplib::Request& req, httplib::Response& res) { asset(name, req, res); });
+      get("/" + name, [this, name](const httplib::Request& req, httplib::Response& res) { asset(name, req, res); });
     }
-    http.Get("/api/run", wrap(&Impl::run_info));
-    http.Get("/api/frame.png", wrap(&Impl::frame));
-    http.Get("/api/nodes", wrap(&Impl::nodes));
-    http.Get("/api/series", wrap(&Impl::series));
-    http.Get("/api/events", wrap(&Impl::events));
-    http.Get("/api/compare", wrap(&Impl::compare));
-    http.Get("/api/bookmarks", [this](const httplib::Request& req, httplib::Response& res) {
+    get("/api/run", wrap(&Impl::run_info));
+    get("/api/frame.png", wrap(&Impl::frame));
+    get("/api/nodes", wrap(&Impl::nodes));
+    get("/api/series", wrap(&Impl::series));
+    get("/api/events", wrap(&Impl::events));
+    get("/api/compare", wrap(&Impl::compare));
+    get("/api/bookmarks", [this](const httplib::Request& req, httplib::Response& res) {
       guarded(req, res, [&] { bookmarks(req, res, false); });
     });
-    http.Post("/api/bookmarks", [this](const httplib::Request& req, httplib::Response& res) {
+    post("/api/bookmarks", [this](const httplib::Request& req, httplib::Response& res) {
       guarded(req, res, [&] { bookmarks(req, res, true); });
     });
-    http.Post("/api/export", wrap(&Impl::start_export));
-    http.Get("/api/export/status", wrap(&Impl::export_status));
-    http.Get("/api/export/file", wrap(&Impl::export_file));
-    http.set_error_handler([](const httplib::Request&, httplib::Response& res) {
-      if (res.body.empty()) send_error(res, res.status, res.status == 404 ? "no such endpoint" : "bad request");
+    post("/api/export", wrap(&Impl::start_export));
+    get("/api/export/status", wrap(&Impl::export_status));
+    get("/api/export/file", wrap(&Impl::export_file));
+    http.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
+      if (!res.body.empty()) return;
+      const auto known = allowed_methods.find(req.path);
+      if (res.status == 404 && known != allowed_methods.end()) {
+        // A known path asked with another method (GET /api/export): say which it takes.
+        res.set_header("Allow", known->second);
+        send_error(res, 405, req.method + " is not allowed here; this path takes " + known->second);
+        return;
+      }
+      send_error(res, res.status, res.status == 404 ? "no such endpoint" : "bad request");
     });
     http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
       send_error(res, 500, "internal error");

@@ -1,6 +1,7 @@
 #include "apps/replay/request_params.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "sim/scene/input_error.h"
@@ -30,12 +31,16 @@ std::optional<double> RequestParams::optional_number(const std::string& name, do
   const auto value = text(name);
   if (!value) return std::nullopt;
   char* end = nullptr;
-  const double x = value->empty() || value->size() > 64 ? NAN : std::strtod(value->c_str(), &end);
+  // Decimal only: strtod would also read " 5" or "0x10" (16).
+  const bool decimal = !value->empty() && value->size() <= 64 && value->find_first_not_of("0123456789+-.eE") == std::string::npos;
+  const double x = decimal ? std::strtod(value->c_str(), &end) : NAN;
   if (!std::isfinite(x) || end != value->c_str() + value->size())
     throw ParamError(name, "expected a finite number, got " + quoted(*value));
-  if (x < min || x > max)
-    throw ParamError(name, "expected a number in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
-                               quoted(*value));
+  if (x < min || x > max) {
+    char range[64];
+    std::snprintf(range, sizeof range, "[%g, %g]", min, max);  // not to_string's "[0.001000, 1000.000000]"
+    throw ParamError(name, "expected a number in " + std::string(range) + ", got " + quoted(*value));
+  }
   return x;
 }
 
@@ -47,8 +52,9 @@ long long RequestParams::integer(const std::string& name, long long fallback, lo
   const auto value = text(name);
   if (!value) return fallback;
   char* end = nullptr;
-  const long long x = value->empty() || value->size() > 20 ? 0 : std::strtoll(value->c_str(), &end, 10);
-  if (value->empty() || value->size() > 20 || end != value->c_str() + value->size())
+  const bool digits = !value->empty() && value->size() <= 20 && value->find_first_not_of("0123456789-") == std::string::npos;
+  const long long x = digits ? std::strtoll(value->c_str(), &end, 10) : 0;
+  if (!digits || end != value->c_str() + value->size())
     throw ParamError(name, "expected an integer, got " + quoted(*value));
   if (x < min || x > max)
     throw ParamError(name, "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
@@ -84,6 +90,8 @@ render::View parse_view(const RequestParams& p) {
   v.camera = render::parse_camera(camera);
   if (v.camera == render::CameraMode::kCentre && !p.text("center"))
     throw ParamError("center", "camera=center needs center=X,Y (metres)");
+  if (v.camera != render::CameraMode::kCentre && p.text("center"))
+    throw ParamError("center", "center=X,Y goes with camera=center (or no camera), not camera=" + camera);
   try {
     if (const auto layers = p.text("layers")) v.layers = render::parse_layer_list(*layers);
   } catch (const InputError& e) {

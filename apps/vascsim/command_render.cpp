@@ -98,6 +98,8 @@ int run_render_command(int argc, char** argv) {
     if (args.value("camera")) o.view.camera = render::parse_camera(*args.value("camera"));
     if (o.view.camera == render::CameraMode::kCentre && !args.value("center"))
       throw UsageError("--camera center needs --center X,Y");
+    if (o.view.camera != render::CameraMode::kCentre && args.value("center"))
+      throw UsageError("--center goes with --camera center (or no --camera), not --camera " + *args.value("camera"));
     if (args.value("layers")) o.view.layers = render::parse_layer_list(*args.value("layers"));
     if (args.value("hide")) o.view.layers = render::hide_layers(o.view.layers, *args.value("hide"));
   } catch (const InputError& e) {
