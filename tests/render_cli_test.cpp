@@ -8,6 +8,7 @@
 
 #include "render/image_diff.h"
 #include "render/png_writer.h"
+#include "sim/log/frame_log.h"
 #define STBI_WRITE_NO_STDIO
 #include <stb/stb_image_write.h>
 #include "render_test_util.h"
@@ -75,6 +76,35 @@ TEST(RenderCli, MissingAndTruncatedLogsExit2WithoutOutput) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("truncated"), std::string::npos) << r.err;
   EXPECT_FALSE(has_final_outputs(dir / "out"));
+}
+
+// A finished run's summary.json counts its frames: a log cut or appended to afterwards (a copy
+// cut short, another log concatenated) is refused by render and export, not drawn silently
+// shorter or with an extra frame (a copy of the last record passes every time check).
+TEST(RenderCli, ALogWithOtherFramesThanItsSummaryIsRefused) {
+  ScratchDir dir("cli_summary_frames");
+  SyntheticLogSpec spec;
+  spec.frames = 10;
+  const std::string run = testing::make_run(dir, spec);
+  const std::string log = run + "/frames.vlog";
+  testing::write_bytes(run + "/summary.json", R"({"format": "vascsim-summary/1", "ok": true, "frames": 10})");
+  const std::string still = " --still 0.5 --width 64 --height 64 --png '" + (dir / "still.png") + "'";
+  ASSERT_EQ(run_vascsim("render '" + run + "'" + still, dir).exit_code, 0);
+  const std::string bytes = testing::read_bytes(log);
+  const std::size_t record = 8 * FrameLogReader(log).header().record_doubles();
+  for (const std::string& changed : {bytes + bytes.substr(bytes.size() - record), bytes.substr(0, bytes.size() - record)}) {
+    SCOPED_TRACE(changed.size() > bytes.size() ? "appended" : "cut");
+    testing::write_bytes(log, changed);
+    testing::CommandResult r = run_vascsim("render '" + run + "'" + still + " --force", dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("frames, but " + run + "/summary.json says the run wrote 10"), std::string::npos) << r.err;
+    r = run_vascsim("export '" + run + "' --csv '" + (dir / "csv") + "'", dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("cut or appended to after the run ended"), std::string::npos) << r.err;
+  }
+  // A hand-written summary without a count holds the log to nothing more than its own checks.
+  testing::write_bytes(run + "/summary.json", R"({"ok": true})");
+  EXPECT_EQ(run_vascsim("render '" + run + "'" + still + " --force", dir).exit_code, 0);
 }
 
 TEST(RenderCli, UnwritableDestinationExits2WithoutPartialFiles) {

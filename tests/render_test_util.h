@@ -91,6 +91,11 @@ inline std::string make_run(const ScratchDir& dir, const SyntheticLogSpec& spec,
   return run;
 }
 
+inline void write_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << bytes;
+}
+
 inline std::string read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream s;

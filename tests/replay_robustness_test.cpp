@@ -185,6 +185,25 @@ TEST(ReplayRobustness, ASecondServerOnTheSamePortIsRefused) {
   }
 }
 
+// A stop that comes before the server listens is not lost: the library's own stop() did nothing
+// then, and the server served on (a test that stopped at once hung; Ctrl-C right after the start
+// would have been ignored).
+TEST(ReplayRobustness, AStopBeforeOrAsServingStartsEndsTheServer) {
+  ScratchDir dir("replay_early_stop");
+  const std::string run = small_run(dir);
+  {
+    ReplayServer s(ReplayOptions{{run}});
+    s.stop();
+    s.serve();  // returns at once
+  }
+  for (int k = 0; k < 20; ++k) {
+    ReplayServer s(ReplayOptions{{run}});
+    std::thread serving([&] { s.serve(); });
+    s.stop();
+    serving.join();
+  }
+}
+
 // More idle keep-alive connections than a small worker pool (two browser tabs hold 12) do not
 // stall the next request.
 TEST(ReplayRobustness, IdleKeepAliveConnectionsDoNotStallTheServer) {

@@ -1,11 +1,14 @@
 #include "apps/replay/replay_server.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <mutex>
 #include <random>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -89,6 +92,9 @@ struct ReplayServer::Impl {
   RenderWorker worker;
   ExportJobs exports;
   httplib::Server http;
+  // The library's stop() does nothing until listen_after_bind() has started; these make a stop
+  // that comes first (Ctrl-C right after the start, a test that stops at once) still count.
+  std::atomic<bool> serve_called{false}, stop_called{false}, serve_returned{false};
 
   std::string cookie_name() const { return "vascsim_token_" + std::to_string(port); }
 
@@ -513,7 +519,17 @@ std::string ReplayServer::url() const {
          (impl_->options.require_token ? "?token=" + impl_->token : "");
 }
 
-void ReplayServer::serve() { impl_->http.listen_after_bind(); }
-void ReplayServer::stop() { impl_->http.stop(); }
+void ReplayServer::serve() {
+  impl_->serve_called = true;
+  if (!impl_->stop_called) impl_->http.listen_after_bind();
+  impl_->serve_returned = true;
+}
+
+void ReplayServer::stop() {
+  impl_->stop_called = true;
+  if (!impl_->serve_called) return;  // serve() will see stop_called and not listen
+  while (!impl_->http.is_running() && !impl_->serve_returned) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  impl_->http.stop();
+}
 
 }  // namespace vascsim::replay

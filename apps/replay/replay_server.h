@@ -36,7 +36,8 @@ class ReplayServer {
   const std::string& token() const;
   // "http://HOST:PORT/?token=TOKEN", the line users open.
   std::string url() const;
-  // Serves until stop() is called (from any thread).
+  // Serves until stop() is called (from any thread; a stop() before serve() has started counts:
+  // serve() then returns at once).
   void serve();
   void stop();
 

@@ -1,8 +1,12 @@
 #include "sim/io/run_summary.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
+#include "sim/io/json_fields.h"
 #include "sim/io/provenance.h"
 #include "sim/io/scene_reader.h"
 
@@ -82,6 +86,31 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                                     {"feed_force_mean", s.feed_force_mean}};
   }
   return j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n";  // a scene file name need not be UTF-8
+}
+
+void check_log_matches_summary(const std::string& run_path, std::size_t log_frames) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path summary_path = fs::path(run_path) / "summary.json";
+  if (!fs::is_directory(run_path, ec) || !fs::is_regular_file(summary_path, ec)) return;
+  std::ifstream in(summary_path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  // A summary that is not the program's (hand-written, or of another version) has no count to
+  // hold the log to; the log's own checks still apply.
+  json summary;
+  try {
+    summary = io::parse_json_strictly(text.str(), summary_path.string());
+  } catch (const InputError&) {
+    return;
+  }
+  const json* frames = summary.is_object() && summary.contains("frames") ? &summary["frames"] : nullptr;
+  if (!frames || !frames->is_number_unsigned()) return;
+  const auto expected = frames->get<std::uint64_t>();
+  if (expected != log_frames)
+    throw InputError((fs::path(run_path) / "frames.vlog").string() + ": " + std::to_string(log_frames) + " frames, but " +
+                     summary_path.string() + " says the run wrote " + std::to_string(expected) +
+                     ": the log was cut or appended to after the run ended (run it again, or copy it again)");
 }
 
 }  // namespace vascsim

@@ -9,4 +9,11 @@ namespace vascsim {
 
 std::string run_summary_json(const Scene& scene, const Run& run);
 
+// For a run directory with summary.json: throws InputError if its frame log holds another number
+// of frames (`log_frames`) than the summary gives, i.e. the log was cut or appended to after the
+// run ended (a copy cut short, a log concatenated onto it), which would otherwise be drawn or
+// exported silently shorter or with a frame of garbage. A log file named directly, a run without
+// a summary (stopped or still running) or a summary without a frame count is not checked.
+void check_log_matches_summary(const std::string& run_path, std::size_t log_frames);
+
 }  // namespace vascsim
