@@ -42,6 +42,9 @@ const BadVessels kBad[] = {
      "/vessels/segments/0/aneurysms/0/neck: a width > 0 and below the sac's diameter"},
     {"too_narrow_for_rod", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.25, "length": 0.2, "fraction": 0.03}])") R"(], "start": "a", "goal": "j"}})",
      "/vessels: the lumen on the route narrows to 3 mm across at (0.25, 0) m, not wider than the rod (4 mm across, /rod/outer_radius)"},
+    // Exactly the rod's width (0.04 of 100 mm; rounding made it 4 nm wider and it passed).
+    {"as_narrow_as_rod", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.25, "length": 0.2, "fraction": 0.04}])") R"(], "start": "a", "goal": "j"}})",
+     "/vessels: the lumen on the route narrows to 4 mm across at (0.25, 0) m, not wider than the rod (4 mm across, /rod/outer_radius)"},
     {"maze_and_vessels", R"({"maze": {}, "vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j"}})",
      "/maze: expected no \"maze\" beside \"vessels\" (a scene has one environment), got an object"},
     // Found by the scene fuzz harness: a far point overflowed the lumen's integer geometry
@@ -65,6 +68,8 @@ const BadVessels kBadMasks[] = {
     {"mask_start_outside", MASK("two_discs.png", "[0.01, 0.01]", "[0.3, 0.3]"), "/vessels/start: "},
     {"mask_goal_outside", MASK("two_discs.png", "[0.3, 0.3]", "[0.01, 0.01]"), "/vessels/goal: "},
     {"mask_not_connected", MASK("two_discs.png", "[0.3, 0.3]", "[1.3, 0.3]"), "/vessels/goal: "},
+    {"mask_goal_on_start", MASK("two_discs.png", "[0.3, 0.3]", "[0.3, 0.3]"),
+     "/vessels/goal: expected a point at least two pixels of "},
     {"mask_changed",
      R"({"vessels": {"mask": {"file": "two_discs.png", "pixel_size": 0.01, "pixel_hash": "0123456789abcdef"}, "start": [0.3, 0.3], "goal": [0.35, 0.3]}})",
      "/vessels/mask/pixel_hash: expected the hash of "},

@@ -30,7 +30,7 @@ void put_chunk(std::string& png, const std::string& type, const std::string& dat
 
 // An 8-bit PNG of colour type 0 (grey, 1 byte a pixel) or 2 (RGB, 3 bytes), rows from the top.
 std::string png_bytes(int width, int height, int colour_type, const std::vector<std::uint8_t>& pixels) {
-  const int channels = colour_type == 2 ? 3 : 1;
+  const int channels = colour_type == 2 ? 3 : colour_type == 4 ? 2 : colour_type == 6 ? 4 : 1;
   std::string raw;  // each row: filter type 0, then its bytes
   for (int y = 0; y < height; ++y) {
     raw.push_back(0);

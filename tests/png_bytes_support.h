@@ -10,7 +10,8 @@ namespace vascsim::test {
 
 // The CRC-32 PNG chunks carry (ISO 3309, as zlib's crc32).
 std::uint32_t crc32_of(const std::string& bytes);
-// An 8-bit PNG of colour type 0 (grey, 1 byte a pixel) or 2 (RGB, 3 bytes), rows from the top.
+// An 8-bit PNG of colour type 0 (grey, 1 byte a pixel), 2 (RGB, 3 bytes), 4 (grey and alpha, 2)
+// or 6 (RGBA, 4), rows from the top.
 std::string png_bytes(int width, int height, int colour_type, const std::vector<std::uint8_t>& pixels);
 
 }  // namespace vascsim::test

@@ -45,6 +45,11 @@ TEST(VesselMaskPng, ReadsGreyRowsFromTheTopAndColourAsLuminance) {
   EXPECT_EQ(g.grey, (std::vector<std::uint8_t>{0, 10, 20, 200, 230, 255}));
   const GreyImage c = load_grey_png(write_png(dir, "rgb.png", 2, 1, 2, {255, 255, 255, 0, 0, 0}));
   EXPECT_EQ(c.grey, (std::vector<std::uint8_t>{255, 0}));
+  // Alpha composited over black: transparent white is background, not lumen.
+  const GreyImage a = load_grey_png(write_png(dir, "grey_alpha.png", 3, 1, 4, {255, 255, 255, 0, 128, 128}));
+  EXPECT_EQ(a.grey, (std::vector<std::uint8_t>{255, 0, 64}));
+  const GreyImage rgba = load_grey_png(write_png(dir, "rgba.png", 2, 1, 6, {255, 255, 255, 0, 255, 255, 255, 255}));
+  EXPECT_EQ(rgba.grey, (std::vector<std::uint8_t>{0, 255}));
 }
 
 TEST(VesselMaskPng, RefusesAnImageOverTheSizeLimit) {

@@ -159,6 +159,37 @@ TEST(VesselPath, CornerRadiusCapsWhatTheLumenAllows) {
   EXPECT_EQ(again.path.corner_radius, 0.5 * widest);
 }
 
+// The smallest distance from the reference path to a wall, relative to the narrowest radius of
+// the route (negative: outside the lumen), over 4000 points along it.
+double path_clearance(Scene scene) {
+  const std::unique_ptr<Navigation> nav = prepare_navigation(scene);
+  const Environment& env = nav->environment;
+  const double narrowest = *std::min_element(env.centreline_radius.begin(), env.centreline_radius.end());
+  double worst = INFINITY;
+  for (int k = 0; k <= 4000; ++k) {
+    const Vec2 p = nav->trajectory->position(nav->trajectory->duration() * k / 4000.0);
+    WallHit hit;
+    WallDistanceField::nearest_brute_force(env.walls, p, hit);
+    worst = std::min(worst, (inside_lumen(env.lumen, p) ? 1.0 : -1.0) * std::abs(hit.distance) / narrowest);
+  }
+  return worst;
+}
+
+// A corner into a narrower branch is rounded by the branch's radius, not the parent's: sized by
+// the parent's 50 mm, the arc entered a 10 mm side branch off-centre and crossed its wall (37 of
+// 421 path points outside). Then the arc keeps within r (1 - cos(theta/2) / 2) of either leg:
+// at 90 degrees at least 0.35 r from the wall.
+TEST(VesselPath, RoundedCornersStayInsideANarrowerBranch) {
+  for (const double branch : {0.01, 0.02, 0.005}) {
+    const std::string text = R"({"vessels": {"nodes": {"inlet": [0.1, 0.5], "j": [0.5, 0.5], "end": [0.9, 0.5], "side": [0.5, 0.8]},
+        "segments": [{"from": "inlet", "to": "j", "radius": 0.05}, {"from": "j", "to": "end", "radius": 0.05},
+                     {"from": "j", "to": "side", "radius": )" + std::to_string(branch) + R"(}], "start": "inlet", "goal": "side"},
+        "rod": {"outer_radius": 0.001, "inner_radius": 0.0005}})";
+    EXPECT_GT(path_clearance(read_scene_text(text, "side_branch.json")), 0.3) << "branch radius " << branch;
+  }
+  for (const char* name : kGraphScenes) EXPECT_GT(path_clearance(shipped(name)), 0.3) << name;
+}
+
 class ShippedNetwork : public ::testing::TestWithParam<const char*> {};
 
 // The grid's query against every wall, at 10^5 random points over the bounds, inside and outside

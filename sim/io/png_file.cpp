@@ -95,11 +95,15 @@ PngPixels decode_png(const std::string& bytes, const std::string& label, int cha
 }
 
 GreyImage load_grey_png(const std::string& path, int max_side) {
-  PngPixels p = read_png(path, 1, max_side);
+  // Grey and alpha, composited over black: a mask drawn on a transparent background (white with
+  // alpha 0 outside the vessels, as image editors export it) was read as all lumen.
+  const PngPixels p = read_png(path, 2, max_side);
   GreyImage img;
   img.width = p.width;
   img.height = p.height;
-  img.grey = std::move(p.data);
+  img.grey.resize(p.data.size() / 2);
+  for (std::size_t i = 0; i < img.grey.size(); ++i)
+    img.grey[i] = static_cast<std::uint8_t>((unsigned{p.data[2 * i]} * p.data[2 * i + 1] + 127) / 255);
   return img;
 }
 

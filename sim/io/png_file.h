@@ -37,7 +37,8 @@ struct GreyImage {
   int width = 0, height = 0;         // px
   std::vector<std::uint8_t> grey;    // row-major, row 0 at the top
 };
-// read_png(path, 1, max_side) as a grey image (a colour PNG is converted to its luminance).
+// A grey image: a colour PNG is converted to its luminance, and a PNG with alpha is composited
+// over black (transparent is not lumen).
 GreyImage load_grey_png(const std::string& path, int max_side = kMaxMaskSide);
 
 }  // namespace vascsim::io

@@ -109,6 +109,11 @@ void read_vessels(FieldReader& in, VesselsSpec& out) {
     out.mask.goal = in.vec2("goal", out.mask.goal, kMaxCoordinate);
     in.finish();
     out.mask.grey = load_mask_pixels(out.mask, in.file(), in.pointer_of("mask") + "/file");
+    // As a graph's goal must be another node: a goal on the start made a path of length 0, an
+    // inlet with no direction and a run that crumpled the rod against the image's edge (exit 0).
+    if ((out.mask.goal - out.mask.start).norm() < 2.0 * out.mask.pixel_size)
+      in.fail("goal", "a point at least two pixels of " + out.mask.resolved + " (" + format_number(2.0 * out.mask.pixel_size) +
+                          " m) from the start", to_json(out.mask.goal));
     if (!pixel_hash.empty() && pixel_hash != out.mask.pixel_hash)
       mask.fail("pixel_hash", "the hash of " + out.mask.resolved + " as it is now, " + out.mask.pixel_hash +
                                   " (the image changed since this scene was written)", pixel_hash);

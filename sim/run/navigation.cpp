@@ -33,7 +33,8 @@ void refuse_what_does_not_fit(const Scene& scene, const Navigation& nav, const M
   } else {
     // The narrowest place on the route, e.g. a stenosis, must let the rod through.
     const auto narrowest = std::min_element(env.centreline_radius.begin(), env.centreline_radius.end());
-    if (narrowest != env.centreline_radius.end() && 2.0 * *narrowest <= diameter) {
+    // Within 1e-9 counts as equal: a stenosis leaving exactly the rod's width came out 4 nm wider.
+    if (narrowest != env.centreline_radius.end() && 2.0 * *narrowest <= diameter * (1 + 1e-9)) {
       const Vec2& at = env.centreline[static_cast<std::size_t>(narrowest - env.centreline_radius.begin())];
       std::snprintf(text, sizeof text, ": /vessels: the lumen on the route narrows to %g mm across at (%g, %g) m, "
                     "not wider than the rod (%g mm across, /rod/outer_radius)", 2e3 * *narrowest, at.x(), at.y(), 1e3 * diameter);
