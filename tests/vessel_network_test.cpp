@@ -190,6 +190,18 @@ TEST(VesselPath, RoundedCornersStayInsideANarrowerBranch) {
   for (const char* name : kGraphScenes) EXPECT_GT(path_clearance(shipped(name)), 0.3) << name;
 }
 
+// Facets follow the smallest radius, but never below 1 um: a 10 nm branch off the route made
+// millions of vertices (30 s and 300 MB for 1e-8 m, minutes for less) before any check ran.
+TEST(VesselLumen, AHairThinBranchDoesNotExplodeTheFacets) {
+  Scene s = shipped("bifurcation");
+  s.vessels.segments[1].radius = {1e-8, 1e-8};  // the branch the route does not take
+  const Environment env = build_vessel_environment(s.vessels, s.rod.length);
+  std::size_t vertices = 0;
+  for (const auto& ring : env.lumen) vertices += ring.size();
+  EXPECT_LT(vertices, 20000u);
+  EXPECT_TRUE(inside_lumen(env.lumen, env.centreline[env.centreline.size() / 2]));
+}
+
 class ShippedNetwork : public ::testing::TestWithParam<const char*> {};
 
 // The grid's query against every wall, at 10^5 random points over the bounds, inside and outside

@@ -15,6 +15,10 @@ namespace {
 // Facets of the lumen's round parts deviate from the true circle by at most this fraction of the
 // smallest radius (0.05 mm for a 0.05 m vessel): a wall error well under the rod's own radius.
 constexpr double kRelativeChordError = 1e-3;
+// ... but never below 1 um (ten steps of the lumen's 0.1 um grid): a vessel of 1e-8 m anywhere in
+// the network made every tube a polygon of millions of vertices (minutes, gigabytes) before the
+// route's own width check could refuse it.
+constexpr double kMinChordError = 1e-6;  // m
 // Concave corners (a carina, a bend's inner side) are rounded to this fraction of the smallest
 // radius: the ridge between two daughters is blunt in real vessels, and a sharp one would make the
 // contact normal jump as the rod slides over it.
@@ -75,7 +79,7 @@ Environment graph_environment(const VesselsSpec& spec, double rod_length) {
   double smallest = INFINITY;
   for (const auto& s : graph.segments)
     for (const auto& v : s.samples) smallest = std::min(smallest, v.radius);
-  const double chord_error = kRelativeChordError * smallest;
+  const double chord_error = std::max(kRelativeChordError * smallest, kMinChordError);
 
   std::vector<Polyline> pieces;
   for (const auto& s : graph.segments)
