@@ -80,13 +80,42 @@ Polyline tapered_tube_ring(const Vec2& a, double ra, const Vec2& b, double rb, d
   return convex_hull(std::move(points));
 }
 
-std::vector<Polyline> lumen_union(const std::vector<Polyline>& pieces, double rounding_radius, double chord_error) {
-  ClipperLib::Paths subject;
-  for (const auto& ring : pieces) subject.push_back(to_path(ring));
+namespace {
+
+ClipperLib::Paths union_of_two(const ClipperLib::Paths& a, const ClipperLib::Paths& b) {
   ClipperLib::Clipper clipper;
-  clipper.AddPaths(subject, ClipperLib::ptSubject, true);
-  ClipperLib::Paths united;
-  clipper.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  clipper.AddPaths(a, ClipperLib::ptSubject, true);
+  clipper.AddPaths(b, ClipperLib::ptSubject, true);
+  ClipperLib::Paths out;
+  clipper.Execute(ClipperLib::ctUnion, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return out;
+}
+
+// The union of all pieces, neighbours first, in a balanced tree. One union of every piece at once
+// sweeps each edge past all the pieces that overlap it, and the pieces of a densely sampled
+// centreline overlap tens deep: the time grew as the cube of the samples (800 samples 4.3 s, 1600
+// 35 s). Merging neighbours first (a piece's neighbours come next in the list) keeps each union's
+// input near the outline of what it covers. Union results keep outer rings counter-clockwise and
+// holes clockwise, so a partial union is a valid input under the non-zero rule.
+ClipperLib::Paths union_of(const std::vector<Polyline>& pieces) {
+  std::vector<ClipperLib::Paths> parts;
+  parts.reserve(pieces.size());
+  for (const auto& ring : pieces) parts.push_back({to_path(ring)});
+  if (parts.size() <= 1) return union_of_two(parts.empty() ? ClipperLib::Paths{} : parts[0], {});
+  while (parts.size() > 1) {
+    std::vector<ClipperLib::Paths> next;
+    next.reserve((parts.size() + 1) / 2);
+    for (std::size_t i = 0; i + 1 < parts.size(); i += 2) next.push_back(union_of_two(parts[i], parts[i + 1]));
+    if (parts.size() % 2) next.push_back(std::move(parts.back()));
+    parts.swap(next);
+  }
+  return parts[0];
+}
+
+}  // namespace
+
+std::vector<Polyline> lumen_union(const std::vector<Polyline>& pieces, double rounding_radius, double chord_error) {
+  ClipperLib::Paths united = union_of(pieces);
   if (rounding_radius > 0.0) {
     const double delta = rounding_radius / kUnit;
     for (const double d : {delta, -delta}) {
