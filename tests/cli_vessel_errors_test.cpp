@@ -39,7 +39,11 @@ const BadVessels kBad[] = {
     {"stenosis_outside", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.45, "length": 0.2}])") R"(], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/stenoses/0: the narrowing (at 0.45 m, length 0.2 m) must lie within the segment (0 to 0.5 m)"},
     {"neck_too_wide", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "aneurysms": [{"at": 0.2, "radius": 0.05, "neck": 0.12}])") R"(], "start": "a", "goal": "j"}})",
-     "/vessels/segments/0/aneurysms/0/neck: a width > 0 and below the sac's diameter"},
+     "/vessels/segments/0/aneurysms/0/neck: expected a width > 0 and below the sac's diameter, 0.1 m, got 0.12"},
+    {"route_wrong_start", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j", "route": ["j", "a"]}})",
+     "/vessels/route/0: expected the start node \"a\", got \"j\""},
+    {"goal_is_start", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(], "start": "a", "goal": "a"}})",
+     "/vessels/goal: expected a node other than the start, got \"a\""},
     {"too_narrow_for_rod", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.25, "length": 0.2, "fraction": 0.03}])") R"(], "start": "a", "goal": "j"}})",
      "/vessels: the lumen on the route narrows to 3 mm across at (0.25, 0) m, not wider than the rod (4 mm across, /rod/outer_radius)"},
     // Exactly the rod's width (0.04 of 100 mm; rounding made it 4 nm wider and it passed).

@@ -19,6 +19,15 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kStenosisSamples = 48;
 
 [[noreturn]] void fail(const std::string& pointer, const std::string& what) { throw InputError(pointer + ": " + what); }
+[[noreturn]] void fail(const std::string& pointer, const std::string& expected, const std::string& got) {
+  fail(pointer, "expected " + expected + ", got " + got);
+}
+std::string number(double x) {
+  std::ostringstream m;
+  m << x;
+  return m.str();
+}
+std::string quoted(const std::string& name) { return "\"" + name + "\""; }
 
 std::string segment_pointer(std::size_t i) { return "/vessels/segments/" + std::to_string(i); }
 
@@ -59,7 +68,7 @@ Profile profile_of(const VesselSegmentSpec& seg, const Vec2& from, const Vec2& t
     fail(rp, m.str());
   }
   for (std::size_t k = 0; k < seg.radius.size(); ++k)
-    if (!(seg.radius[k] > 0.0) || !std::isfinite(seg.radius[k])) fail(rp + "/" + std::to_string(k), "a radius > 0 (m)");
+    if (!(seg.radius[k] > 0.0) || !std::isfinite(seg.radius[k])) fail(rp + "/" + std::to_string(k), "a radius > 0 (m)", number(seg.radius[k]));
   return p;
 }
 
@@ -124,8 +133,8 @@ VesselGraph resolve_vessel_graph(const VesselsSpec& spec) {
     for (std::size_t k = 0; k < seg.aneurysms.size(); ++k) {
       const auto& a = seg.aneurysms[k];
       const std::string ap = segment_pointer(i) + "/aneurysms/" + std::to_string(k);
-      if (!(a.at >= 0.0 && a.at <= r.length)) fail(ap + "/at", "an arc length within the segment (0 to " + std::to_string(r.length) + " m)");
-      if (!(a.neck > 0.0 && a.neck < 2.0 * a.radius)) fail(ap + "/neck", "a width > 0 and below the sac's diameter");
+      if (!(a.at >= 0.0 && a.at <= r.length)) fail(ap + "/at", "an arc length within the segment, [0, " + number(r.length) + "] m", number(a.at));
+      if (!(a.neck > 0.0 && a.neck < 2.0 * a.radius)) fail(ap + "/neck", "a width > 0 and below the sac's diameter, " + number(2.0 * a.radius) + " m", number(a.neck));
       Vec2 point, ahead;
       double base = 0.0, unused = 0.0;
       p.at(a.at, point, base);
@@ -151,7 +160,7 @@ VesselGraph resolve_vessel_graph(const VesselsSpec& spec) {
   if (ends != 1)
     fail("/vessels/start", "the inlet node \"" + spec.start + "\" must end exactly one segment (the rod enters there), it ends " +
                                std::to_string(ends));
-  if (g.start == g.goal) fail("/vessels/goal", "a node other than the start");
+  if (g.start == g.goal) fail("/vessels/goal", "a node other than the start", quoted(spec.goal));
   return g;
 }
 
@@ -165,9 +174,9 @@ std::vector<RouteStep> vessel_route(const VesselGraph& g, const VesselsSpec& spe
       if (it == g.names.end()) fail("/vessels/route/" + std::to_string(i), "\"" + spec.route[i] + "\" is not a node");
       nodes.push_back(static_cast<int>(it - g.names.begin()));
     }
-    if (nodes.front() != g.start) fail("/vessels/route/0", "the start node \"" + spec.start + "\"");
+    if (nodes.front() != g.start) fail("/vessels/route/0", "the start node " + quoted(spec.start), quoted(spec.route.front()));
     if (nodes.back() != g.goal)
-      fail("/vessels/route/" + std::to_string(nodes.size() - 1), "the goal node \"" + spec.goal + "\"");
+      fail("/vessels/route/" + std::to_string(nodes.size() - 1), "the goal node " + quoted(spec.goal), quoted(spec.route.back()));
     for (std::size_t i = 1; i < nodes.size(); ++i) {
       RouteStep best;
       double shortest = std::numeric_limits<double>::infinity();
