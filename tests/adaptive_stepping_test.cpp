@@ -179,6 +179,8 @@ TEST(ErrorControl, AFloorBoundsTheStepAndCountsWhatItKeepsOverTheTolerance) {
   EXPECT_GT(floored.stats.warnings.step_over_tolerance.count, floored.stats.steps / 2);
   EXPECT_EQ(free.stats.warnings.step_over_tolerance.count, 0);
   EXPECT_LE(floored.stats.error_max, 1.0) << "error_max reports the steps within the tolerance";
+  EXPECT_GT(floored.stats.error_max_at_floor, 1.0) << "and error_max_at_floor those kept over it";
+  EXPECT_EQ(free.stats.error_max_at_floor, 0.0);
   // The error grows with the step, as a fixed step of the floor's size would give.
   EXPECT_GT(floored.error, 10 * free.error);
 }

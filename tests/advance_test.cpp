@@ -163,7 +163,9 @@ TEST(Advance, ProfilesAndErrors) {
   for (const char* bad : {R"({"control": {"advance": {"points": [[0, 0], [0, 1]]}}})",
                           R"({"control": {"advance": {"points": [[0, 0]]}}})",
                           R"({"control": {"advance": {"speed": 1, "start": 2, "stop": 1}}})",
-                          R"({"control": {"advance": {"speed": 1, "points": [[0, 0], [1, 1]]}}})"}) {
+                          R"({"control": {"advance": {"speed": 1, "points": [[0, 0], [1, 1]]}}})",
+                          // A first fed length other than 0 was subtracted: this fed 0.05 m, not 0.1.
+                          R"({"control": {"advance": {"points": [[0.1, 0.05], [0.3, 0.1]]}}})"}) {
     try {
       read_scene_text(bad, "a.json");
       ADD_FAILURE() << "accepted " << bad;

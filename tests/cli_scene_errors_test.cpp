@@ -28,6 +28,12 @@ const BadScene kBadScenes[] = {
      "/rod/inner_radius: expected a number in [0, outer_radius = 0.002), got 0.002"},
     {"poisson", R"({"rod": {"poisson_ratio": 0.7}})", "/rod/poisson_ratio: expected a number in [-1, 0.5], got 0.7"},
     {"dt_tiny", R"({"solver": {"dt": 1e-300}})", "/solver/dt: expected a number in [1e-09, 10], got 1e-300"},
+    // dt_min above the first step or the floor: the run failed on its first rejection, "at the
+    // smallest step", with steps shorter than dt_min already taken.
+    {"dt_min_over_floor", R"({"solver": {"adaptive": "error", "dt": 0.02, "dt_min": 0.01, "dt_floor": 0.001}})",
+     "/solver/dt_min: expected at most the floor, dt_floor = 0.001 s, got 0.01"},
+    {"dt_below_dt_min", R"({"solver": {"adaptive": "error", "dt": 1e-9, "dt_min": 1e-6}})",
+     "/solver/dt_min: expected at most the first step, dt = 1e-09 s, got 1e-06"},
     {"static_prescribed", R"({"maze": null, "solver": {"mode": "static"}, "boundary": {"prescribed": [{"node": 5, "velocity": [0, 0.01]}]}})",
      "/boundary/prescribed: expected [] with solver mode \"static\""},
     {"speed_tiny", R"({"path": {"speed": 1e-308}})", "/path/speed: expected a number in [1e-09, 1000], got 1e-308"},

@@ -114,6 +114,19 @@ TEST(KinematicDerivative, ReachesTheGoalWithTheDefaultAndALargeKd) {
   EXPECT_LT(s.tip_error_rms, 2e-3);
 }
 
+// A scene that names only the mode: it was refused over the force modes' Kp of 4, a value the
+// user never wrote. Its own defaults read, and the traversal with them reaches the goal.
+TEST(KinematicDerivative, AModeAloneReadsAndReachesTheGoal) {
+  const Scene bare = read_scene_text(R"({"control": {"mode": "kinematic"}})", "kinematic.json");
+  Scene scene = fast_scene(1, ActuationMode::kKinematic, ContactMode::kImplicit);
+  scene.control.kp = bare.control.kp;
+  scene.control.kd = bare.control.kd;
+  const RunStatistics s = run_scene(scene);
+  ASSERT_FALSE(s.failed) << s.failure;
+  EXPECT_TRUE(s.goal_reached);
+  EXPECT_LT(s.tip_error_rms, 2e-3);
+}
+
 // The shipped maze scenes as a user runs them (their own rod, speed, ramps, solver preset and
 // duration): each reaches its goal with no failure, and implicit contact keeps the rod out of
 // the walls. paper_maze once stopped at the 10 s default duration, short of its goal.

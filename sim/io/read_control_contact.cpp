@@ -43,6 +43,10 @@ void read_advance(FieldReader& control, AdvanceSpec& out) {
       if (!pair || !(t >= 0.0 && t <= 1e7) || !(std::abs(s) <= 1e3) || (i > 0 && !(t > out.points.back().first)))
         in.fail("points/" + std::to_string(i),
                 "[t, s]: t in s, >= 0 and after the previous point's, s the fed length in m (|s| <= 1000)", p);
+      // The rod starts where the scene places it: a first s other than 0 was read as a length fed
+      // before the run and quietly subtracted (points (0.1, 0.05), (0.3, 0.1) fed 0.05 m, not 0.1).
+      if (i == 0 && s != 0.0)
+        in.fail("points/0", "[t, 0]: the fed length is 0 at the first point (the rod starts where the scene places it)", p);
       out.points.emplace_back(t, s);
     }
   } else {
@@ -64,10 +68,14 @@ void read_control(FieldReader& in, ControlSpec& out) {
              : mode == "field"     ? ActuationMode::kField
                                    : ActuationMode::kForce;
   if (in.has("advance")) read_advance(in, out.advance);
-  out.kp = in.number("kp", out.kp, 0.0, 1e9);
-  // Kinematic mode's Kd is a lag in s, not force mode's N s/m: the force modes' default would
-  // slow the imposed tip by a time constant of a quarter second, so there it defaults to none.
-  out.kd = in.number("kd", out.mode == ActuationMode::kKinematic && !in.has("kd") ? 0.0 : out.kd, 0.0, 1e9);
+  // Kinematic mode's gains mean other things than the force modes' N/m and N s/m, so they have
+  // their own defaults: Kp 0.5, half the position error corrected per step (the force modes' 4
+  // was refused as out of [0, 1], a value the user never wrote; with 0.5 maze_default reaches
+  // its goal with a tip error of 0.05 mm RMS), and Kd none (a lag in s: the force modes' 0.4
+  // would slow the imposed tip by a time constant of a quarter second).
+  const bool kinematic = out.mode == ActuationMode::kKinematic;
+  out.kp = in.number("kp", kinematic && !in.has("kp") ? 0.5 : out.kp, 0.0, 1e9);
+  out.kd = in.number("kd", kinematic && !in.has("kd") ? 0.0 : out.kd, 0.0, 1e9);
   if (out.mode == ActuationMode::kKinematic && out.kp > 1.0)
     in.fail("kp", "a number in [0, 1] in kinematic mode (the command is the reference plus Kp times the position error)",
             json(out.kp));

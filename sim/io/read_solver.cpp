@@ -49,6 +49,15 @@ void read_solver(FieldReader& in, SolverSpec& out) {
   out.dt_min = in.positive("dt_min", out.dt_min, out.dt_max);
   out.dt_floor = in.number("dt_floor", out.dt_floor, 0.0, out.dt_max);
   out.dt_mean_min = in.number("dt_mean_min", out.dt_mean_min, 0.0, out.dt_max);
+  // dt_min is where an error-controlled run gives up; a first step or a floor below it took steps
+  // the run could not have chosen, and failed on the first rejection "at the smallest step".
+  if (out.adaptive == StepControl::kError) {
+    const auto got = [&](const char* key, double value) { return in.raw(key) ? *in.raw(key) : nlohmann::json(value); };
+    if (out.dt < out.dt_min)
+      in.fail("dt_min", "at most the first step, dt = " + format_number(out.dt) + " s", got("dt_min", out.dt_min));
+    if (out.dt_floor > 0.0 && out.dt_floor < out.dt_min)
+      in.fail("dt_min", "at most the floor, dt_floor = " + format_number(out.dt_floor) + " s", got("dt_min", out.dt_min));
+  }
   out.mean_burst = in.number("mean_burst", out.mean_burst, 0.0, 1e9);
   out.newton_stop_share = in.number("newton_stop_share", out.newton_stop_share, 0.0, 1.0);
   out.rel_tol = in.positive("rel_tol", out.rel_tol, 1.0);

@@ -40,7 +40,11 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                       {"max", s.steps ? json(s.dt_max) : json(nullptr)},
                       {"mean", s.steps ? json(s.simulated_time / s.steps) : json(nullptr)}};
     if (scene.solver.adaptive == StepControl::kError)
-      j["error_control"] = {{"rejected_steps", s.error_rejected_steps}, {"error_max", s.error_max}, {"steps_cut_to_frames", s.steps_cut_to_frames}};
+      j["error_control"] = {{"rejected_steps", s.error_rejected_steps},
+                            {"error_max", s.error_max},
+                            {"kept_over_tolerance", s.warnings.step_over_tolerance.count},
+                            {"error_max_at_floor", s.error_max_at_floor},
+                            {"steps_cut_to_frames", s.steps_cut_to_frames}};
   }
   j["newton_iterations"] = {{"total", s.newton_iterations},
                             {"mean", s.steps ? static_cast<double>(s.newton_iterations) / s.steps : 0.0},
@@ -81,7 +85,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                        {"paper_contact_iterations_max", s.paper_contact_iterations_max},
                        {"trajectory_duration", run.navigation()->trajectory->duration()}};
     if (scene.control.advance.enabled())
-      j["navigation"]["advance"] = {{"fed_length", scene.control.advance.fed_length(s.simulated_time) - scene.control.advance.fed_length(0.0)},
+      j["navigation"]["advance"] = {{"fed_length", scene.control.advance.fed_length(s.simulated_time)},
                                     {"feed_force_max", s.feed_force_max},
                                     {"feed_force_mean", s.feed_force_mean}};
   }

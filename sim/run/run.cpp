@@ -189,7 +189,10 @@ double Run::advance_controlled(double dt, std::size_t next_frame) {
       continue;
     }
     if (err <= 1.0 || at_floor) {
-      if (err > 1.0) stats_.warnings.step_over_tolerance.note(before.t);
+      if (err > 1.0) {
+        stats_.warnings.step_over_tolerance.note(before.t);
+        stats_.error_max_at_floor = std::max(stats_.error_max_at_floor, err);
+      }
       step_start_controls_ = last_controls_;
       commit(report, controls);
       step_budget_->spend(report.dt);
@@ -350,7 +353,7 @@ void Run::record(FrameSink& sink, const State& frame) {
     if (scene_.control.advance.enabled()) {
       // The drive's reaction, solved at the step's ends, interpolated in between like the forces.
       values.push_back((1.0 - s) * feed_force_at_step_start_ + s * feed_force_at_step_end_);
-      values.push_back(scene_.control.advance.fed_length(frame.t) - scene_.control.advance.fed_length(0.0));
+      values.push_back(scene_.control.advance.fed_length(frame.t));
     }
   }
   sink.write(frame.t, values);

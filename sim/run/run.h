@@ -62,6 +62,7 @@ struct RunStatistics {
   int error_rejected_steps = 0;      // error control: converged steps over the tolerance, retried shorter
   int steps_cut_to_frames = 0;       // error control: steps retried to end on a frame that interpolation would put into a wall
   double error_max = 0.0;            // error control: largest accepted error estimate / tolerance (above the floor)
+  double error_max_at_floor = 0.0;   // error control: the same of the steps kept over the tolerance at the floor
   double dt_min = std::numeric_limits<double>::infinity();  // s, shortest step taken
   double dt_max = 0.0;               // s, longest step taken
   std::size_t frames = 0;

@@ -10,7 +10,7 @@
 namespace vascsim {
 
 Vec2 NodeConstraint::position(double t) const {
-  const Vec2 fed = feed.enabled() ? Vec2((feed.fed_length(t) - feed.fed_length(0.0)) * feed_direction) : Vec2::Zero();
+  const Vec2 fed = feed.enabled() ? Vec2(feed.fed_length(t) * feed_direction) : Vec2::Zero();
   return origin + velocity * t + amplitude * std::sin(2.0 * M_PI * frequency * t) + fed;
 }
 
