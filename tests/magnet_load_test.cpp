@@ -12,6 +12,7 @@
 
 #include "sim/io/scene_reader.h"
 #include "sim/run/compile.h"
+#include "sim/run/run.h"
 #include "sim/scene/input_error.h"
 #include "sim/step/model.h"
 #include "sim/step/statics.h"
@@ -31,7 +32,7 @@ double exact_tip_angle(double a, double phi) {
 }
 
 struct Equilibrium {
-  double tip_angle;    // rad, of the distal edge
+  double tip_angle;    // rad, of the distal edge, unwrapped: the rod's total turning from +x
   double curvature_spread;  // max |kappa_i - kappa_mean| / kappa_mean over interior hinges
 };
 
@@ -45,17 +46,21 @@ Equilibrium solve(double a, double phi, int nodes) {
   scene.solver.load_steps = 20;
   const State state = test::static_equilibrium(scene);
   const int n = scene.rod.nodes;
-  const Eigen::Vector2d last = state.position(n - 1) - state.position(n - 2);
+  const Eigen::Vector2d first = state.position(1) - state.position(0);
   // Turning angle between consecutive edges from node 2 on (the centred clamp holds the first).
   std::vector<double> turn;
   for (int i = 2; i + 1 < n; ++i) {
     const Eigen::Vector2d e0 = state.position(i) - state.position(i - 1), e1 = state.position(i + 1) - state.position(i);
     turn.push_back(std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1)));
   }
-  double mean = 0.0, spread = 0.0;
+  double mean = 0.0, spread = 0.0, total = std::atan2(first.y(), first.x());
+  for (int i = 1; i + 1 < n; ++i) {
+    const Eigen::Vector2d e0 = state.position(i) - state.position(i - 1), e1 = state.position(i + 1) - state.position(i);
+    total += std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1));
+  }
   for (double t : turn) mean += t / turn.size();
   for (double t : turn) spread = std::max(spread, std::abs(t - mean) / std::abs(mean));
-  return {std::atan2(last.y(), last.x()), spread};
+  return {total, spread};
 }
 
 // The distal edge's direction is the tangent at its midpoint, dl / 2 short of the tip, so the
@@ -75,6 +80,80 @@ TEST(MagnetLoad, TipAngleMatchesTheMagneticElastica) {
   }
   // The Dottie number: theta = cos(theta) for a = 1 across the field.
   EXPECT_NEAR(exact_tip_angle(1.0, M_PI / 2), 0.7390851332151607, 1e-12);
+}
+
+// A strong field nearly against the rod (a = 300, phi = 3 rad): raised from zero, it turns the
+// rod the short way, into the root on [0, phi]. The rod anti-parallel to the field is a saddle
+// and the far coil (about -3.3 rad) another minimum; load increments of a = 15 took Newton from
+// the straight rod up to the saddle, and the solve down from there into the far coil
+// (sim/step/statics.h keeps increments from crossing to an unstable equilibrium).
+TEST(MagnetLoad, AStrongFieldNearlyAgainstTheRodTurnsItTheShortWay) {
+  const double a = 300.0, phi = 3.0, exact = exact_tip_angle(a, phi);
+  const Equilibrium coarse = solve(a, phi, 41), fine = solve(a, phi, 81);
+  std::printf("exact %.6f, N 41 %.6f, N 81 %.6f\n", exact, coarse.tip_angle, fine.tip_angle);
+  EXPECT_NEAR(coarse.tip_angle, exact, 1e-3 * exact);
+  EXPECT_NEAR(2 * fine.tip_angle - coarse.tip_angle, exact, 2e-5 * exact);
+  EXPECT_LT(fine.curvature_spread, 1e-3) << "a pure couple bends the rod into a circular arc";
+}
+
+// A field like it (a = 289) switched on at once on the damped rod at rest: its couple turns the tip
+// counter-clockwise from the start (m x B = m B sin(3) > 0), and the rod comes to rest near the
+// static equilibrium above. The fast preset's first 10 ms step ended at a saddle of its
+// incremental potential with the rod turned the other way (-2.74 rad after 10 ms, settling into
+// the far coil); such a step is now retried shorter (sim/step/stepper.cpp). With a fixed dt the
+// step is kept and counted (summary.json /warnings/saddle_step).
+TEST(MagnetLoad, AStepOfTheMotionNeverEndsAtASaddle) {
+  const double phi = 3.0;
+  for (const char* control : {"error", "off"}) {
+    Scene scene = test::cantilever(41);
+    scene.loads.magnet.enabled = true;
+    scene.loads.magnet.moment = 0.01;
+    scene.loads.magnet.field = 1.0;  // T: a = m B L / EI = 289
+    scene.loads.magnet.angle = phi;
+    const double a = scene.loads.magnet.moment * scene.loads.magnet.field * scene.rod.length / test::bending_stiffness(scene.rod);
+    scene.loads.damping.enabled = true;
+    scene.loads.damping.coefficient = 0.5;
+    scene.solver = SolverSpec{};
+    apply_solver_preset("fast", scene.solver);
+    const bool fixed = std::string(control) == "off";
+    if (fixed) {
+      scene.solver.adaptive = StepControl::kOff;
+      scene.solver.dt = 0.005;
+    }
+    // Fixed steps: two (later ones may fail Newton: 3 to 10 ms steps from the straight rod
+    // either held it at the saddle for the whole second or failed within 40 ms).
+    scene.run.duration = fixed ? 0.01 : 1.0;
+    scene.run.output_interval = 0.01;
+    vascsim::Run run(compile(scene));
+    struct TurningSink : FrameSink {
+      const vascsim::Run* run = nullptr;
+      double least = 0.0, last = 0.0;  // rad, the rod's total turning (first edge's heading + bends)
+      void write(double, const std::vector<double>&) override {
+        const State& s = run->state();
+        const int n = static_cast<int>(s.x.size() / 2);
+        const Eigen::Vector2d first = s.position(1) - s.position(0);
+        double turning = std::atan2(first.y(), first.x());
+        for (int i = 1; i + 1 < n; ++i) {
+          const Eigen::Vector2d e0 = s.position(i) - s.position(i - 1), e1 = s.position(i + 1) - s.position(i);
+          turning += std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1));
+        }
+        least = std::min(least, turning);
+        last = turning;
+      }
+    } sink;
+    sink.run = &run;
+    ASSERT_TRUE(run.run(sink)) << run.statistics().failure;
+    const int saddles = run.statistics().warnings.saddle_step.count;
+    std::printf("%s: least turning %.4f rad, at the end %.4f rad, %d saddle steps kept\n", control, sink.least, sink.last, saddles);
+    if (fixed) {
+      EXPECT_GT(saddles, 0) << "a fixed 5 ms step is too long for the rod's unstable mode here";
+    } else {
+      EXPECT_EQ(saddles, 0);
+      EXPECT_GT(sink.least, -1e-6) << "the tip turned clockwise, against the field's couple";
+      // At 1 s the rod is still creeping towards its static equilibrium (2.99 rad).
+      EXPECT_NEAR(sink.last, exact_tip_angle(a, phi), 0.1);
+    }
+  }
 }
 
 TEST(MagnetLoad, RotatingFieldTurnsTheTipAndStaticModeRefusesTimeProfiles) {

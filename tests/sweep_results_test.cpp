@@ -46,7 +46,7 @@ TEST(SweepOutcome, TellsDoneFailedAndMissingRunsApart) {
   test::write_text(dir + "/summary.json", "{\"format\": \"vascsim-summary/1\", \"ok\": tru");
   const RunOutcome corrupt = read_run_outcome(dir);
   EXPECT_EQ(corrupt.status, "failed");
-  EXPECT_NE(corrupt.failure.find("unreadable summary.json: not valid JSON"), std::string::npos) << corrupt.failure;
+  EXPECT_NE(corrupt.failure.find("unreadable summary: " + dir + "/summary.json: not valid JSON"), std::string::npos) << corrupt.failure;
 
   // No summary: the process's end, from status.json, says why.
   std::remove((dir + "/summary.json").c_str());

@@ -4,10 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <optional>
 
 #include "sim/io/json_fields.h"
+#include "sim/io/run_summary.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::replay {
@@ -51,25 +51,22 @@ void ReplayRun::refresh() {
   if (!summary_.is_null()) return;
   // A summary belongs to the run directory's own log only.
   const bool own_log = !log_is_file_ || fs::path(source_->log_path()).filename() == "frames.vlog";
-  const fs::path summary_path = fs::path(run_dir_) / "summary.json";
-  std::error_code ec;
   if (!own_log) {
     growing_ = false;
     return;
   }
-  if (!fs::is_regular_file(summary_path, ec)) {
-    // No summary yet: a run still writing, unless the log has not changed for a while (a run
-    // that was killed leaves no summary either).
-    const auto written = fs::last_write_time(source_->log_path(), ec);
-    growing_ = !ec && fs::file_time_type::clock::now() - written < std::chrono::seconds(kStaleLogSeconds);
-    return;
-  }
-  std::ifstream in(summary_path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  // The summary is written atomically (temporary name, then rename), so it is complete or absent.
+  std::optional<json> summary;
   try {
-    summary_ = io::parse_json_strictly(text.str(), summary_path.string());
+    summary = read_run_summary(run_dir_);
+    if (!summary) {
+      // No summary yet: a run still writing, unless the log has not changed for a while (a run
+      // that was killed leaves no summary either).
+      std::error_code ec;
+      const auto written = fs::last_write_time(source_->log_path(), ec);
+      growing_ = !ec && fs::file_time_type::clock::now() - written < std::chrono::seconds(kStaleLogSeconds);
+      return;
+    }
+    summary_ = std::move(*summary);
   } catch (const InputError& e) {
     summary_ = json{{"error", e.what()}};
   }

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
+#include "sim/io/bounded_read.h"
 #include "sim/io/json_fields.h"
 #include "sim/io/provenance.h"
 #include "sim/io/scene_reader.h"
@@ -59,6 +59,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                    {"step_retried", warning(s.warnings.step_retried)},
                    {"step_over_tolerance", warning(s.warnings.step_over_tolerance)},
                    {"paper_contact_iteration_cap", warning(s.warnings.paper_contact_cap)},
+                   {"saddle_step", warning(s.warnings.saddle_step)},
                    {"unstable_equilibrium", warning(s.warnings.unstable_equilibrium)},
                    {"left_unstable_equilibrium", warning(s.warnings.left_unstable)},
                    {"stability_undecided", warning(s.warnings.stability_undecided)}};
@@ -92,28 +93,38 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   return j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n";  // a scene file name need not be UTF-8
 }
 
+std::optional<json> read_run_summary(const std::string& run_dir) {
+  namespace fs = std::filesystem;
+  constexpr std::size_t kMaxSummaryBytes = std::size_t(64) << 20;
+  std::error_code ec;
+  const fs::path path = fs::path(run_dir) / "summary.json";
+  if (!fs::is_regular_file(path, ec)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  const std::string text = in ? io::read_at_most(in, kMaxSummaryBytes) : std::string();
+  if (!in && !in.eof()) throw InputError(path.string() + ": cannot be read");
+  if (text.size() > kMaxSummaryBytes) throw InputError(path.string() + ": larger than 64 MB: not a summary vascsim wrote");
+  return io::parse_json_strictly(text, path.string());
+}
+
 void check_log_matches_summary(const std::string& run_path, std::size_t log_frames) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  const fs::path summary_path = fs::path(run_path) / "summary.json";
-  if (!fs::is_directory(run_path, ec) || !fs::is_regular_file(summary_path, ec)) return;
-  std::ifstream in(summary_path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
+  if (!fs::is_directory(run_path, ec)) return;
   // A summary that is not the program's (hand-written, or of another version) has no count to
   // hold the log to; the log's own checks still apply.
-  json summary;
+  std::optional<json> summary;
   try {
-    summary = io::parse_json_strictly(text.str(), summary_path.string());
+    summary = read_run_summary(run_path);
   } catch (const InputError&) {
     return;
   }
-  const json* frames = summary.is_object() && summary.contains("frames") ? &summary["frames"] : nullptr;
+  if (!summary) return;
+  const json* frames = summary->is_object() && summary->contains("frames") ? &(*summary)["frames"] : nullptr;
   if (!frames || !frames->is_number_unsigned()) return;
   const auto expected = frames->get<std::uint64_t>();
   if (expected != log_frames)
     throw InputError((fs::path(run_path) / "frames.vlog").string() + ": " + std::to_string(log_frames) + " frames, but " +
-                     summary_path.string() + " says the run wrote " + std::to_string(expected) +
+                     (fs::path(run_path) / "summary.json").string() + " says the run wrote " + std::to_string(expected) +
                      ": the log was cut or appended to after the run ended (run it again, or copy it again)");
 }
 

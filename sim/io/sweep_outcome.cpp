@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "sim/io/json_fields.h"
+#include "sim/io/run_summary.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim {
@@ -20,8 +21,6 @@ namespace fs = std::filesystem;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // summary.json holds the final state of every node: a few MB for the largest rods.
-constexpr std::size_t kMaxSummaryBytes = std::size_t(64) << 20;
-
 // Reads a regular file of at most `limit` bytes (a larger one is read as its first `limit`
 // bytes, which then fail to parse: a message, not an allocation of whatever size it claims).
 bool read_small_file(const fs::path& path, std::string& text, std::size_t limit) {
@@ -56,8 +55,7 @@ std::string last_line(const fs::path& log) {
   return last;
 }
 
-void read_summary(const std::string& text, const std::string& label, RunOutcome& out) {
-  const json s = io::parse_json_strictly(text, label);
+void read_summary(const json& s, const std::string& label, RunOutcome& out) {
   if (!s.is_object() || s.value("format", json()) != "vascsim-summary/1")
     throw InputError(label + ": /format: expected \"vascsim-summary/1\"");
   if (!s.contains("ok") || !s["ok"].is_boolean()) throw InputError(label + ": /ok: expected true or false");
@@ -124,15 +122,16 @@ RunOutcome read_run_outcome(const std::string& run_dir) {
       // A status that cannot be read says nothing; the summary or its absence decides.
     }
   }
-  if (read_small_file(dir / "summary.json", text, kMaxSummaryBytes)) {
-    try {
-      read_summary(text, "summary.json", out);
-    } catch (const InputError& e) {
-      out = RunOutcome{};
-      out.metrics.assign(kMetricCount, kNaN);
-      out.status = "failed";
-      out.failure = std::string("unreadable ") + e.what();
+  try {
+    if (const std::optional<json> summary = read_run_summary(run_dir)) {
+      read_summary(*summary, (dir / "summary.json").string(), out);
+      return out;
     }
+  } catch (const InputError& e) {
+    out = RunOutcome{};
+    out.metrics.assign(kMetricCount, kNaN);
+    out.status = "failed";
+    out.failure = std::string("unreadable summary: ") + e.what();
     return out;
   }
   if (!out.has_status) return out;  // missing

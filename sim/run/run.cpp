@@ -133,6 +133,7 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
     return false;
   }
   if (report.round_off_stop) stats_.warnings.newton_round_off.note(t_start);
+  if (report.saddle) stats_.warnings.saddle_step.note(t_start);
   return true;
 }
 
@@ -365,7 +366,7 @@ bool Run::solve_equilibrium(FrameSink& sink) {
   record(sink, state_);
   const StaticReport report = solve_static(*model_, state_, workspace_, last_controls_);
   stats_.steps = report.increments;
-  stats_.rejected_steps = report.rejected;
+  stats_.rejected_steps = report.rejected + report.stability_cuts;
   stats_.newton_iterations = report.iterations;  // of every increment, failed ones too
   stats_.newton_iterations_all = report.iterations;
   stats_.newton_iterations_max = report.iterations;

@@ -193,8 +193,10 @@ NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace
       }
       banded_block_ldlt_solve(ws.jacobian, ws.dx);
       factored_without_off_band = true;
+      out.negative_pivots = f.negative_pivots;
     } else {
       factored_without_off_band = false;
+      out.negative_pivots = -1;
       if (!sparse_ldlt_solve(ws.jacobian, ws.off_band, ws.fixed, ws.dx)) {
         out.failure = "singular Newton matrix (with self-contact)";
         return out;

@@ -9,6 +9,17 @@
 
 namespace vascsim {
 
+namespace {
+
+// Negative pivots of the Newton matrix at x (-1 where its factorisation fails).
+int negative_pivots_at(const Model& model, const NewtonProblem& p, const Eigen::VectorXd& x, Workspace& ws) {
+  assemble(model, p, x, ws, true);
+  const LdltResult f = banded_block_ldlt_factor(ws.jacobian);
+  return f.ok ? f.negative_pivots : -1;
+}
+
+}  // namespace
+
 StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls) {
   StaticReport report;
   set_targets(model, controls, state.t, ws);
@@ -26,6 +37,9 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
   p.c = 0.0;
   p.controls = &controls;
   p.start = &state;
+  // Negative pivots at the last accepted equilibrium (-1: not known, e.g. a singular matrix).
+  p.load_scale = 0.0;
+  int pivots = model.solver.stable_branch ? negative_pivots_at(model, p, x, ws) : -1;
   while (lambda < 1.0) {
     const double next = std::min(1.0, lambda + increment);
     p.load_scale = next;
@@ -33,6 +47,24 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
     const NewtonOutcome out = newton_solve(model, p, ws);
     report.iterations += out.iterations;
     if (out.converged) {
+      if (pivots == 0) {
+        const int reached = negative_pivots_at(model, p, ws.x, ws);
+        if (reached > 0 && increment > min_increment && report.stability_cuts < max_rejections) {
+          // Newton crossed from a stable equilibrium to an unstable one: from a shape far from
+          // the new one, at an indefinite matrix, it climbs to the nearest root, not down the
+          // branch the load was following (a rod near anti-parallel to a strong field reached
+          // the saddle, and the search down from there the far, clockwise coil). A smaller
+          // increment stays on the branch.
+          ++report.stability_cuts;
+          increment = std::max(min_increment, 0.5 * increment);
+          continue;
+        }
+        // Stable, or still unstable within the smallest increment: then the branch really ends or bifurcates
+        // here (a column at its buckling load). Newton follows the unstable root from here on
+        // (from a buckled shape this close to the bifurcation it does not converge), and the
+        // solve leaves it at full load, below.
+        pivots = reached;
+      }
       x = ws.x;
       lambda = next;
       ++report.increments;
@@ -63,7 +95,7 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
     report.negative_pivots = factor.negative_pivots;
     if (report.negative_pivots > 0 && model.solver.stable_branch) {
       // Newton found a saddle of the energy (a column kept straight past buckling): leave it.
-      report.unstable_pivots = report.negative_pivots;
+      report.unstable_pivots = std::max(report.unstable_pivots, report.negative_pivots);
       ws.x = x;
       const BranchOutcome b = descend_to_stable(model, p, ws, unloaded);
       report.iterations += b.iterations;

@@ -18,6 +18,9 @@ struct StaticReport {
   bool ok = false;
   int increments = 0;        // accepted load increments
   int rejected = 0;          // failed increments (retried smaller)
+  // Increments retried smaller because Newton went from a stable equilibrium to an unstable one
+  // (with SolverSpec::stable_branch): it jumped off the branch the load was following.
+  int stability_cuts = 0;
   int iterations = 0;        // Newton iterations over all increments
   double load_scale = 0.0;   // reached
   // Negative pivots of the Newton matrix at the equilibrium returned: its count of negative
@@ -40,8 +43,12 @@ struct StaticReport {
 
 // Solves from state.x; on success state.x is the equilibrium, v = 0 and the BDF2 history reset.
 // On failure state.x holds the last converged increment (load_scale in the report).
-// With model.solver.stable_branch (the default) an unstable equilibrium at full load is left for
-// a stable one; if that fails the unstable one is returned (report.ok, negative_pivots > 0).
+// With model.solver.stable_branch (the default) the load path keeps to the stable branch where it
+// can: an increment that goes from a stable equilibrium to an unstable one is retried smaller
+// (Newton jumped off the branch); where even the smallest one does (a bifurcation or the
+// branch's end) the path goes on along the unstable root, and the unstable equilibrium at full
+// load is left for a stable one; if that fails the unstable one is returned (report.ok,
+// negative_pivots > 0).
 StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls);
 
 }  // namespace vascsim

@@ -88,6 +88,23 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
     report.failure = buf + out.failure;
     return false;
   }
+  // The step's positions minimise its incremental potential (inertia plus energy) only where
+  // the Newton matrix is positive definite: a saddle is an answer of the equations but not of
+  // the motion, reached when the step is too long for an unstable mode (a rod against a strong
+  // field went round the wrong way in one 10 ms step). A shorter step's larger inertia term
+  // (m / (beta h)^2) makes it definite again; a fixed-dt run keeps the step and says so.
+  report.saddle = false;
+  if (out.negative_pivots > 0) {
+    if (model.solver.adaptive != StepControl::kOff) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    "at t = %.9g s with dt = %.3g s: the step ends at a saddle of its incremental potential (%d negative pivots)",
+                    state.t, h, out.negative_pivots);
+      report.failure = buf;
+      return false;
+    }
+    report.saddle = true;
+  }
   report.iterations = out.iterations;
   report.residual = out.residual / std::max(out.scale, 1e-300);
   report.round_off_stop = out.round_off_stop;

@@ -31,6 +31,10 @@ struct StepReport {
   int rejected = 0;            // attempts that failed and were retried with dt/2
   double residual = 0.0;       // relative residual at the accepted solution
   bool round_off_stop = false; // converged because the update fell below round-off
+  // solver.adaptive "off" only (elsewhere such a step is retried shorter): the step kept ends at
+  // a saddle of its incremental potential (the Newton matrix has negative pivots), so it is not
+  // the motion's; the step is too long for an unstable mode.
+  bool saddle = false;
   std::string failure;         // when !ok: what went wrong, at what time and dt
 };
 
