@@ -99,8 +99,18 @@ class FrameLog:
 
     @property
     def times(self):
-        """Frame times in s, shape (frames,)."""
-        return self._records[:, 0]
+        """Frame times in s, shape (frames,). Raises ValueError, naming the frame, where a time is
+        not finite, negative or before the previous frame's, as the C++ reader refuses them (a
+        corrupt log would otherwise plot and interpolate silently wrong)."""
+        t = self._records[:, 0]
+        bad = ~(np.isfinite(t) & (t >= 0))
+        bad[1:] |= ~(t[1:] >= t[:-1])
+        if bad.any():
+            i = int(np.argmax(bad))
+            why = "not a finite time >= 0" if not (np.isfinite(t[i]) and t[i] >= 0) else "before the previous frame's time"
+            raise ValueError("%s: frame %d has time %r s, %s (times must be finite, >= 0 and non-decreasing)"
+                             % (self.path, i, float(t[i]), why))
+        return t
 
     def channel_info(self, name):
         for c in self.channels:

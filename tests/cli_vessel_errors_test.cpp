@@ -25,7 +25,21 @@ const BadVessels kBad[] = {
     {"unknown_node", R"({"vessels": {)" NODES R"(, "segments": [{"from": "a", "to": "x", "radius": 0.05}], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/to: \"x\" is not a node in /vessels/nodes"},
     {"radius_count", R"({"vessels": {)" NODES R"(, "segments": [{"from": "a", "to": "j", "via": [[0.2, 0.1]], "radius": [0.05, 0.04, 0.03, 0.02]}], "start": "a", "goal": "j"}})",
-     "/vessels/segments/0/radius: expected 2 radii (at the ends) or 3 (one per point), got 4"},
+     "/vessels/segments/0/radius: expected 2 radii (at the ends) or 3 (one per point: from, via, to), got 4"},
+    // Without via points there is no choice to offer ("expected 2 radii (at the ends) or 2").
+    {"radius_count_no_via", R"({"vessels": {)" NODES R"(, "segments": [{"from": "a", "to": "j", "radius": [0.05, 0.04, 0.03]}], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/radius: expected 2 radii (at the ends), got 3"},
+    // A segment between two nodes at one point has no via to blame.
+    {"segment_of_length_zero", R"({"vessels": {"nodes": {"a": [0, 0], "j": [0.5, 0], "k": [0.5, 0]}, "segments": [)" TUBE("") R"(, {"from": "j", "to": "k", "radius": 0.05}], "start": "a", "goal": "k"}})",
+     "/vessels/segments/1: \"j\" and \"k\" are at the same point (a segment joins two different places)"},
+    {"via_repeats_a_point", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "via": [[0.2, 0.1], [0.2, 0.1]])") R"(], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/via/1: expected a point other than via/0, got [0.2, 0.1]"},
+    {"via_on_the_end", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "via": [[0.2, 0.1], [0.5, 0]])") R"(], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/via/1: expected a point other than node \"j\", where the segment ends, got [0.5, 0]"},
+    {"via_not_a_point", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "via": [[0.2, 0.1], "x"])") R"(], "start": "a", "goal": "j"}})",
+     "/vessels/segments/0/via/1: expected a point [x, y] (m), got \"x\""},
+    {"route_not_a_name", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j", "route": ["a", 7]}})",
+     "/vessels/route/1: expected a node name, got 7"},
     {"radius_negative", R"({"vessels": {)" NODES R"(, "segments": [{"from": "a", "to": "j", "radius": -1}], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/radius: expected a number in (0, 1000], got -1"},
     {"no_nodes", R"({"vessels": {"segments": [], "start": "a", "goal": "j"}})",
@@ -56,7 +70,7 @@ const BadVessels kBad[] = {
     {"node_far_away", R"({"vessels": {"nodes": {"a": [0, 0], "j": [1e19, 0]}, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j"}})",
      "/vessels/nodes/j: expected a point [x, y] (m) with |x|, |y| <= 1000, got "},
     {"via_far_away", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "via": [[0.2, -9.2e18]])") R"(], "start": "a", "goal": "j"}})",
-     "/vessels/segments/0/via: expected points [x, y] (m) with |x|, |y| <= 1000, got "},
+     "/vessels/segments/0/via/0: expected a point [x, y] (m) with |x|, |y| <= 1000, got "},
     {"unknown_key", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "radius_end": 0.04)") R"(], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/radius_end: unknown key"},
 };
@@ -77,6 +91,13 @@ const BadVessels kBadMasks[] = {
     {"mask_changed",
      R"({"vessels": {"mask": {"file": "two_discs.png", "pixel_size": 0.01, "pixel_hash": "0123456789abcdef"}, "start": [0.3, 0.3], "goal": [0.35, 0.3]}})",
      "/vessels/mask/pixel_hash: expected the hash of "},
+    // Not a hash at all: a typo, not an image that changed.
+    {"mask_hash_malformed",
+     R"({"vessels": {"mask": {"file": "two_discs.png", "pixel_size": 0.01, "pixel_hash": "xyz"}, "start": [0.3, 0.3], "goal": [0.35, 0.3]}})",
+     "/vessels/mask/pixel_hash: expected 16 lower-case hex digits, the hash vascsim vessels writes of two_discs.png (or no pixel_hash), got \"xyz\""},
+    {"mask_threshold_zero",
+     R"({"vessels": {"mask": {"file": "two_discs.png", "pixel_size": 0.01, "threshold": 0}, "start": [0.3, 0.3], "goal": [0.35, 0.3]}})",
+     "/vessels/mask/threshold: expected a grey level in (0, 1] of white in two_discs.png, got 0"},
 };
 
 class VesselSceneErrors : public ::testing::TestWithParam<BadVessels> {};

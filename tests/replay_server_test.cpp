@@ -389,6 +389,30 @@ TEST(ReplayServer, ExportWritesANewMp4EachTime) {
   EXPECT_EQ(files[1], "export-002.mp4");
 }
 
+// A third export while two run is refused with 429 and says why (docs/replay.md); the server
+// cancels the two when it stops and leaves no partial file. Each of the two renders the whole
+// 101-frame run at 30 frames a second and 1280 x 960, seconds of work, so both still run when
+// the third request comes a few milliseconds later.
+TEST(ReplayServer, AThirdExportWhileTwoRunIsTooManyRequests) {
+  ScratchDir dir("replay_export_busy");
+  const std::string run = synthetic_run(dir, "run", long_spec());
+  {
+    LiveServer s({{run}});
+    for (int k = 0; k < 3; ++k) {
+      const auto r = s.client().Post(s.authorised("/api/export?width=1280&height=960&fps=30").c_str(), "", "text/plain");
+      ASSERT_TRUE(r);
+      if (k < 2) {
+        EXPECT_EQ(r->status, 200) << r->body;
+        continue;
+      }
+      EXPECT_EQ(r->status, 429) << r->body;
+      EXPECT_EQ(json::parse(r->body)["error"], "two exports are already running; wait for one to finish");
+    }
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(run))
+    EXPECT_EQ(entry.path().filename().string().find("export-"), std::string::npos) << entry.path();
+}
+
 // Two servers on one run (two users, or a forgotten one): exports started at once get numbers
 // of their own, and bookmarks added through both are all kept.
 TEST(ReplayServer, TwoServersOnOneRunShareItsNumbersAndBookmarks) {

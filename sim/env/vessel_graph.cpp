@@ -54,7 +54,20 @@ Profile profile_of(const VesselSegmentSpec& seg, const Vec2& from, const Vec2& t
   p.s.push_back(0.0);
   for (std::size_t k = 1; k < p.points.size(); ++k) {
     const double step = (p.points[k] - p.points[k - 1]).norm();
-    if (!(step > 0.0)) fail(segment_pointer(index) + "/via", "consecutive centreline points must differ");
+    if (!(step > 0.0)) {
+      // Points are from, via/0 .. via/n-1, to: the via point at k - 1 repeats the point before
+      // it, or the last one lies on `to`.
+      if (seg.via.empty())
+        fail(segment_pointer(index), quoted(seg.from) + " and " + quoted(seg.to) +
+                                         " are at the same point (a segment joins two different places)");
+      const bool at_end = k > seg.via.size();
+      const std::size_t j = at_end ? seg.via.size() - 1 : k - 1;
+      const std::string other = at_end ? "node " + quoted(seg.to) + ", where the segment ends"
+                                : j == 0 ? "node " + quoted(seg.from) + ", where the segment starts"
+                                         : "via/" + std::to_string(j - 1);
+      fail(segment_pointer(index) + "/via/" + std::to_string(j), "a point other than " + other,
+           "[" + number(seg.via[j].x()) + ", " + number(seg.via[j].y()) + "]");
+    }
     p.s.push_back(p.s.back() + step);
   }
   const std::string rp = segment_pointer(index) + "/radius";
@@ -64,7 +77,9 @@ Profile profile_of(const VesselSegmentSpec& seg, const Vec2& from, const Vec2& t
     p.radius = seg.radius;
   } else {
     std::ostringstream m;
-    m << "expected 2 radii (at the ends) or " << p.points.size() << " (one per point), got " << seg.radius.size();
+    m << "expected 2 radii (at the ends)";
+    if (p.points.size() > 2) m << " or " << p.points.size() << " (one per point: from, via, to)";
+    m << ", got " << seg.radius.size();
     fail(rp, m.str());
   }
   for (std::size_t k = 0; k < seg.radius.size(); ++k)

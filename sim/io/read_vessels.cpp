@@ -40,7 +40,6 @@ std::vector<Item> read_list(FieldReader& in, const std::string& key, const char*
 }
 
 constexpr const char* kPointWithinBounds = "a point [x, y] (m) with |x|, |y| <= 1000";
-constexpr const char* kPointsWithinBounds = "points [x, y] (m) with |x|, |y| <= 1000";
 bool within_bounds(const Vec2& p) { return std::abs(p.x()) <= kMaxCoordinate && std::abs(p.y()) <= kMaxCoordinate; }
 
 VesselSegmentSpec read_segment(FieldReader& in) {
@@ -55,11 +54,12 @@ VesselSegmentSpec read_segment(FieldReader& in) {
     if (!via->is_array()) in.fail("via", "an array of [x, y] points (m)", *via);
     for (std::size_t k = 0; k < via->size(); ++k) {
       const json& p = via->at(k);
+      const std::string at = "via/" + std::to_string(k);
       if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
-        in.fail("via", "an array of [x, y] points (m)", p);
+        in.fail(at, "a point [x, y] (m)", p);
       s.via.emplace_back(p[0].get<double>(), p[1].get<double>());
-      if (!s.via.back().allFinite()) in.fail("via", "finite points", p);
-      if (!within_bounds(s.via.back())) in.fail("via", kPointsWithinBounds, p);
+      if (!s.via.back().allFinite()) in.fail(at, "a finite point", p);
+      if (!within_bounds(s.via.back())) in.fail(at, kPointWithinBounds, p);
     }
   }
   s.stenoses = read_list<StenosisSpec>(in, "stenoses", "an array of {\"at\", \"length\", \"fraction\"}", [](FieldReader& f) {
@@ -85,8 +85,17 @@ std::string read_mask(FieldReader& in, VesselMaskSpec& m) {
   m.file = in.text("file", "");
   if (m.file.empty()) in.fail("file", "the path of a PNG (white lumen on black)", in.has("file") ? *in.raw("file") : json());
   m.pixel_size = in.positive("pixel_size", m.pixel_size, 1.0);
+  // Grey levels at or above the threshold are lumen: 0 would make the whole image lumen.
+  if (const json* t = in.raw("threshold"); t && !(t->is_number() && t->get<double>() > 0.0 && t->get<double>() <= 1.0))
+    in.fail("threshold", "a grey level in (0, 1] of white in " + m.file, *t);
   m.threshold = in.number("threshold", m.threshold, 0.0, 1.0);
   const std::string pixel_hash = in.text("pixel_hash", "");
+  // As `vascsim vessels` writes it: the image's 64-bit FNV-1a hash in 16 hex digits. Anything
+  // else is a typo, not an image that changed.
+  if (!pixel_hash.empty() &&
+      (pixel_hash.size() != 16 || pixel_hash.find_first_not_of("0123456789abcdef") != std::string::npos))
+    in.fail("pixel_hash", "16 lower-case hex digits, the hash vascsim vessels writes of " + m.file + " (or no pixel_hash)",
+            pixel_hash);
   in.finish();
   // A relative path is relative to the scene file, so a scene and its mask move together.
   const std::filesystem::path file(m.file);
@@ -137,8 +146,9 @@ void read_vessels(FieldReader& in, VesselsSpec& out) {
   if (out.goal.empty()) in.fail("goal", "the name of the goal node", in.has("goal") ? *in.raw("goal") : json());
   if (const json* route = in.raw("route")) {
     if (!route->is_array() || route->size() < 2) in.fail("route", "an array of at least two node names", *route);
-    for (const auto& n : *route) {
-      if (!n.is_string()) in.fail("route", "node names", *route);
+    for (std::size_t k = 0; k < route->size(); ++k) {
+      const json& n = route->at(k);
+      if (!n.is_string()) in.fail("route/" + std::to_string(k), "a node name", n);
       out.route.push_back(n.get<std::string>());
     }
   }

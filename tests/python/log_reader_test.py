@@ -1,7 +1,8 @@
 """The Python frame-log reader (python/vascsim_log.py) against the C++ reader on a real run: every
 channel of every frame, as `vascsim export --csv` (the C++ FrameLogReader) writes them with 17
 significant digits, must equal the memory-mapped arrays exactly. Also: a run directory or file
-opens, a torn last record is ignored, another format version and a wrong channel count are refused.
+opens, a torn last record is ignored, another format version, a wrong channel count and frame
+times that are not finite or go back are refused.
 Usage: log_reader_test.py VASCSIM_EXE SOURCE_DIR WORK_DIR"""
 import csv
 import os
@@ -56,6 +57,21 @@ with open(os.path.join(run, "frames.vlog"), "rb") as f:
 with open(torn, "wb") as f:
     f.write(data[:-100])
 assert vascsim_log.open_log(torn).frame_count == log.frame_count - 1
+
+# A frame whose time goes back, or is not finite, is refused by frame, as the C++ reader does.
+record_bytes = 8 * log.record_doubles
+for frame, value, why in ((3, 0.01, "before the previous frame's time"), (5, float("nan"), "not a finite time >= 0")):
+    broken = os.path.join(work, "time_%d.vlog" % frame)
+    at = log.data_offset + frame * record_bytes
+    with open(broken, "wb") as f:
+        f.write(data[:at] + np.float64(value).tobytes() + data[at + 8:])
+    try:
+        vascsim_log.open_log(broken).times
+        raise AssertionError("a log whose frame %d has time %r was read" % (frame, value))
+    except ValueError as e:
+        assert "time_%d.vlog: frame %d has time" % (frame, frame) in str(e) and why in str(e), e
+    export = subprocess.run([exe, "export", broken, "--csv", csv_dir, "--force"], capture_output=True, text=True)
+    assert export.returncode == 2 and "frame %d has time" % frame in export.stderr, export
 
 # Another version is refused by name.
 other = os.path.join(work, "v2.vlog")
