@@ -68,7 +68,7 @@ Box2 world_box(const LogMetadata& meta, const FrameState& first) {
 // its label says.
 void legend_arrow(Canvas& c, glm::vec2 start, float baseline, float room, float gap, double px_per_newton,
                   double reference, const DisplayUnit& unit, Rgba colour, float width, int font) {
-  auto label = [&](double value) { return format_value(value, unit, value * unit.factor < 1 ? 1 : 0); };
+  auto label = [&](double value) { return format_round_value(value, unit); };
   const double fits = (room - gap - c.text_width(label(reference), font)) / px_per_newton;  // N
   if (reference > fits) reference = fits > 0 ? nice_floor(fits) : 0;
   const float len = static_cast<float>(reference * px_per_newton);
@@ -86,7 +86,7 @@ void scale_bar(Canvas& c, glm::vec2 left, double max_px, double px_per_metre, fl
   c.box({x, y - 3}, {x + bar_px, y + 3}, kInk);
   c.box({x, y - 8}, {x + 2, y + 8}, kInk);
   c.box({x + bar_px - 2, y - 8}, {x + bar_px, y + 8}, kInk);
-  c.text(format_value(bar_m, length_unit(bar_m), bar_m * length_unit(bar_m).factor < 1 ? 1 : 0),
+  c.text(format_round_value(bar_m, length_unit(bar_m)),
          {label_beside ? x + bar_px + 0.6f * font : x, label_baseline}, font, kInk);
 }
 

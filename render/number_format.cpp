@@ -1,5 +1,6 @@
 #include "render/number_format.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -52,6 +53,12 @@ std::string format_value(double value_si, DisplayUnit unit, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f %s", digits, value_si * unit.factor, unit.name);
   return buf;
+}
+
+std::string format_round_value(double value_si, DisplayUnit unit) {
+  const double shown = std::abs(value_si * unit.factor);
+  const int decimals = shown >= 1 || !(shown > 0) ? 0 : std::min(12, static_cast<int>(std::ceil(-std::log10(shown) - 1e-9)));
+  return format_value(value_si, unit, decimals);
 }
 
 }  // namespace vascsim::render
