@@ -191,9 +191,9 @@ int run_run_command(int argc, char** argv) {
   // Round-off stops are an accepted convergence criterion (docs/solver.md), and steps kept at
   // a floor (solver.dt_floor, dt_mean_min) over the tolerance the presets' designed trade (docs/accuracy.md): counted, not printed.
   warn("a step was retried with a smaller dt", s.warnings.step_retried);
-  warn("a step ended at a saddle of its incremental potential, not on the motion (solver.adaptive \"off\": the step "
-       "is too long for an unstable mode; a shorter dt or adaptive stepping resolves it)",
-       s.warnings.saddle_step);
+  warn("a step was kept that is not the motion (solver.adaptive \"off\": it ended at a saddle of its incremental "
+       "potential, or an edge turned by more than 0.5 rad in it; a shorter dt or adaptive stepping resolves it)",
+       s.warnings.unresolved_step);
   warn("paper contact hit contact.paper_iterations unsettled", s.warnings.paper_contact_cap);
   warn("the static equilibrium is unstable (the Newton matrix has negative pivots)", s.warnings.unstable_equilibrium);
   warn("the load path reached an unstable equilibrium; the solve left it for a stable one (solver.stable_branch)",

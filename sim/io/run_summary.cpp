@@ -59,7 +59,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                    {"step_retried", warning(s.warnings.step_retried)},
                    {"step_over_tolerance", warning(s.warnings.step_over_tolerance)},
                    {"paper_contact_iteration_cap", warning(s.warnings.paper_contact_cap)},
-                   {"saddle_step", warning(s.warnings.saddle_step)},
+                   {"unresolved_step", warning(s.warnings.unresolved_step)},
                    {"unstable_equilibrium", warning(s.warnings.unstable_equilibrium)},
                    {"left_unstable_equilibrium", warning(s.warnings.left_unstable)},
                    {"stability_undecided", warning(s.warnings.stability_undecided)}};

@@ -133,7 +133,7 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
     return false;
   }
   if (report.round_off_stop) stats_.warnings.newton_round_off.note(t_start);
-  if (report.saddle) stats_.warnings.saddle_step.note(t_start);
+  if (report.unresolved) stats_.warnings.unresolved_step.note(t_start);
   return true;
 }
 

@@ -44,7 +44,7 @@ struct WarningCount {
 struct RunWarnings {
   WarningCount newton_round_off;      // steps whose Newton stopped at round-off, not at rel_tol
   WarningCount step_retried;          // steps that needed a smaller dt (see rejected_steps)
-  WarningCount saddle_step;           // solver.adaptive "off": steps kept at a saddle of their incremental potential
+  WarningCount unresolved_step;       // solver.adaptive "off": steps kept that jumped (a saddle, an edge turned > 0.5 rad)
   WarningCount step_over_tolerance;   // error control: steps at a floor (dt_floor, dt_mean_min) kept over the tolerance
   WarningCount paper_contact_cap;     // paper contact: steps that hit contact.paper_iterations unsettled
   WarningCount unstable_equilibrium;  // static mode: the equilibrium found is unstable

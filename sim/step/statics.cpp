@@ -77,6 +77,12 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
       char buf[120];
       std::snprintf(buf, sizeof buf, "static solve stopped at load factor %.4g of 1: ", lambda);
       report.failure = buf + out.failure;
+      std::snprintf(buf, sizeof buf, " (the smallest increment is %.3g of the load", min_increment);
+      report.failure += buf;
+      if (report.stability_cuts > 0)
+        report.failure += "; " + std::to_string(report.stability_cuts) +
+                          " increments were cut for leaving the stable branch, which turns sharply here";
+      report.failure += ": more solver.load_steps or solver.max_halvings make smaller ones)";
       break;
     }
   }

@@ -25,6 +25,37 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+// rad: the most any edge of the rod may turn in one step. The shipped scenes at the fast preset
+// turn an edge by at most 0.36 rad between two frames (coil_chamber, 33 ms apart), so this
+// limits only motion no preset resolves.
+constexpr double kMaxEdgeTurn = 0.5;
+
+struct EdgeTurn {
+  bool over = false;
+  int edge = -1;       // the first edge over the limit
+  double angle = 0.0;  // rad, its turn
+};
+
+// Whether an edge turns by more than kMaxEdgeTurn from `before` to `after` (2N positions, m).
+// By the cosine, one square root per edge and no arctangent: this runs at every step.
+EdgeTurn largest_edge_turn(const Eigen::VectorXd& before, const Eigen::VectorXd& after) {
+  static const double cos_limit = std::cos(kMaxEdgeTurn);
+  EdgeTurn out;
+  const Eigen::Index n = before.size() / 2;
+  for (Eigen::Index i = 0; i + 1 < n; ++i) {
+    const Eigen::Vector2d a = before.segment<2>(2 * i + 2) - before.segment<2>(2 * i);
+    const Eigen::Vector2d b = after.segment<2>(2 * i + 2) - after.segment<2>(2 * i);
+    const double dot = a.dot(b);
+    if (dot >= cos_limit * std::sqrt(a.squaredNorm() * b.squaredNorm())) continue;
+    out.over = true;
+    out.edge = static_cast<int>(i);
+    out.angle = std::atan2(a.x() * b.y() - a.y() * b.x(), dot);
+    out.angle = std::abs(out.angle);
+    return out;
+  }
+  return out;
+}
+
 bool attempt(const Model& model, State& state, Workspace& ws, const Controls& controls, double h, const NewtonStopTolerance& stop,
              const NewtonWarmStart* warm, StepReport& report) {
   // Scheme coefficients (see stepper.h).
@@ -88,22 +119,30 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
     report.failure = buf + out.failure;
     return false;
   }
-  // The step's positions minimise its incremental potential (inertia plus energy) only where
-  // the Newton matrix is positive definite: a saddle is an answer of the equations but not of
-  // the motion, reached when the step is too long for an unstable mode (a rod against a strong
-  // field went round the wrong way in one 10 ms step). A shorter step's larger inertia term
-  // (m / (beta h)^2) makes it definite again; a fixed-dt run keeps the step and says so.
-  report.saddle = false;
+  // Two signs that the answer is not the motion but a root the step jumped to, because the step
+  // is too long for what happens in it. A fixed-dt run keeps such a step and says so; otherwise
+  // it is retried shorter, below any floor of error control (whose steps are kept over their
+  // tolerance, not across a jump).
+  // 1. A saddle of the step's incremental potential (inertia plus energy): the positions are a
+  //    minimum only where the Newton matrix is positive definite, and a shorter step's larger
+  //    inertia term m / (beta h)^2 makes it so. A rod against a strong field went round the
+  //    wrong way in the fast preset's first 10 ms step.
+  // 2. An edge turned by more than kMaxEdgeTurn: the rod whipped round within the step, and the
+  //    balanced preset's 1 ms steps coiled that rod 1.5 turns the wrong way, each a minimum.
+  char why[200] = "";
   if (out.negative_pivots > 0) {
-    if (model.solver.adaptive != StepControl::kOff) {
-      char buf[200];
-      std::snprintf(buf, sizeof buf,
-                    "at t = %.9g s with dt = %.3g s: the step ends at a saddle of its incremental potential (%d negative pivots)",
-                    state.t, h, out.negative_pivots);
-      report.failure = buf;
-      return false;
-    }
-    report.saddle = true;
+    std::snprintf(why, sizeof why, "the step ends at a saddle of its incremental potential (%d negative pivots)",
+                  out.negative_pivots);
+  } else if (const EdgeTurn turn = largest_edge_turn(state.x, ws.x); turn.over) {
+    std::snprintf(why, sizeof why, "edge %d turned by %.3g rad in the step, more than %.2g rad (the motion is not resolved)",
+                  turn.edge, turn.angle, kMaxEdgeTurn);
+  }
+  report.unresolved = why[0] != '\0';
+  if (report.unresolved && model.solver.adaptive != StepControl::kOff) {
+    char buf[320];
+    std::snprintf(buf, sizeof buf, "at t = %.9g s with dt = %.3g s: %s", state.t, h, why);
+    report.failure = buf;
+    return false;
   }
   report.iterations = out.iterations;
   report.residual = out.residual / std::max(out.scale, 1e-300);

@@ -31,10 +31,11 @@ struct StepReport {
   int rejected = 0;            // attempts that failed and were retried with dt/2
   double residual = 0.0;       // relative residual at the accepted solution
   bool round_off_stop = false; // converged because the update fell below round-off
-  // solver.adaptive "off" only (elsewhere such a step is retried shorter): the step kept ends at
-  // a saddle of its incremental potential (the Newton matrix has negative pivots), so it is not
-  // the motion's; the step is too long for an unstable mode.
-  bool saddle = false;
+  // solver.adaptive "off" only (elsewhere such a step is retried shorter): the step kept is not
+  // the motion but a root it jumped to, being too long for what happens in it: it ends at a
+  // saddle of its incremental potential (the Newton matrix has negative pivots), or an edge
+  // turned by more than 0.5 rad in it.
+  bool unresolved = false;
   std::string failure;         // when !ok: what went wrong, at what time and dt
 };
 
