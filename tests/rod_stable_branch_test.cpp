@@ -46,13 +46,13 @@ struct Outcome {
 };
 
 // The centred-clamp column along +x, a dead tip load -P x plus `lateral` P_cr along +y.
-Outcome solve_column(bool stable_branch, double lateral) {
+Outcome solve_column(bool stable_branch, double lateral, double load_factor = kLoadFactor) {
   Scene scene = cantilever(kNodes);
   scene.solver.stable_branch = stable_branch;
   const double ei = bending_stiffness(scene.rod), l = scene.rod.length;
   const double p_cr = M_PI * M_PI * ei / (4 * l * l);
   PointLoadSpec tip;
-  tip.force = Vec2(-kLoadFactor * p_cr, lateral * p_cr);
+  tip.force = Vec2(-load_factor * p_cr, lateral * p_cr);
   scene.loads.point_loads.push_back(tip);
   const Model model = *compile(scene);
   State state = initial_state(model);
@@ -96,6 +96,22 @@ TEST(RodStableBranch, ImperfectColumnBendsWithItsImperfection) {
     const Elastica ref = post_buckled(kLoadFactor);
     EXPECT_NEAR(o.tip.y(), std::copysign(ref.delta, lateral), 2e-3 * ref.delta) << lateral;
     EXPECT_NEAR(o.angle, std::copysign(ref.theta, lateral), 2e-3 * ref.theta) << lateral;
+  }
+}
+
+// Far past buckling with larger imperfections: at 30 P_cr with 1e-2 P_cr aside and at 10 P_cr
+// with 1e-4 aside, increments cut for leaving the branch left Newton failing on the small ones
+// where the branch turns, and the solve stopped (exit 1) where load stepping without the check
+// went on. Now it takes the jump it had cut, ends at a stable equilibrium and says that it
+// jumped (statics.h). Which branch it lands on is not checked: at 30 P_cr the tip loops back
+// past the clamp and neither this solve nor the one without the check ends with the tip on the
+// imperfection's side (docs/solver.md, "Limit").
+TEST(RodStableBranch, FarPastBucklingTheSolveJumpsWhereTheBranchTurnsAndSaysSo) {
+  for (const auto& [factor, lateral] : {std::pair{30.0, 1e-2}, std::pair{30.0, -1e-2}, std::pair{10.0, 1e-4}}) {
+    const Outcome o = solve_column(true, lateral, factor);
+    ASSERT_TRUE(o.report.ok) << factor << " " << lateral << ": " << o.report.failure;
+    EXPECT_EQ(o.report.negative_pivots, 0) << o.report.branch_failure;
+    EXPECT_GT(o.report.branch_jumps, 0) << factor << " " << lateral;
   }
 }
 

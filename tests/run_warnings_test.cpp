@@ -33,7 +33,7 @@ void expect_count(const nlohmann::json& w, const char* name, bool happened) {
 // (The default scene's own Newton does stop at round-off now and then: that count is not zero.)
 TEST(RunWarnings, NoneInAnOrdinaryRun) {
   const auto w = warnings_of(default_maze(1.0));
-  for (const char* name : {"step_retried", "unresolved_step", "paper_contact_iteration_cap", "unstable_equilibrium", "left_unstable_equilibrium",
+  for (const char* name : {"step_retried", "unresolved_step", "paper_contact_iteration_cap", "unstable_equilibrium", "left_unstable_equilibrium", "load_path_jumped",
                            "stability_undecided"})
     expect_count(w, name, false);
 }

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "sim/io/json_fields.h"
-#include "sim/io/run_summary.h"
+#include "sim/io/run_summary_reader.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::replay {

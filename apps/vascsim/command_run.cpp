@@ -198,6 +198,9 @@ int run_run_command(int argc, char** argv) {
   warn("the static equilibrium is unstable (the Newton matrix has negative pivots)", s.warnings.unstable_equilibrium);
   warn("the load path reached an unstable equilibrium; the solve left it for a stable one (solver.stable_branch)",
        s.warnings.left_unstable);
+  warn("the load path jumped off the stable branch where it turns more sharply than the smallest increment follows; the "
+       "equilibrium may be on another branch than slower loading reaches (raise solver.load_steps or solver.max_halvings)",
+       s.warnings.load_path_jumped);
   warn("the static equilibrium's stability is not decided: the Newton matrix's eigenvalue nearest zero is within its "
        "round-off at this many nodes (docs/solver.md, \"Limit: static solves of very fine meshes\")",
        s.warnings.stability_undecided);

@@ -5,9 +5,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "sim/io/bounded_read.h"
 #include "sim/io/json_fields.h"
 #include "sim/io/provenance.h"
+#include "sim/io/run_summary_reader.h"
 #include "sim/io/scene_reader.h"
 
 namespace vascsim {
@@ -62,6 +62,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                    {"unresolved_step", warning(s.warnings.unresolved_step)},
                    {"unstable_equilibrium", warning(s.warnings.unstable_equilibrium)},
                    {"left_unstable_equilibrium", warning(s.warnings.left_unstable)},
+                   {"load_path_jumped", warning(s.warnings.load_path_jumped)},
                    {"stability_undecided", warning(s.warnings.stability_undecided)}};
   const State& state = run.state();
   json positions = json::array(), velocities = json::array();
@@ -91,19 +92,6 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                                     {"feed_force_mean", s.feed_force_mean}};
   }
   return j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n";  // a scene file name need not be UTF-8
-}
-
-std::optional<json> read_run_summary(const std::string& run_dir) {
-  namespace fs = std::filesystem;
-  constexpr std::size_t kMaxSummaryBytes = std::size_t(64) << 20;
-  std::error_code ec;
-  const fs::path path = fs::path(run_dir) / "summary.json";
-  if (!fs::is_regular_file(path, ec)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  const std::string text = in ? io::read_at_most(in, kMaxSummaryBytes) : std::string();
-  if (!in && !in.eof()) throw InputError(path.string() + ": cannot be read");
-  if (text.size() > kMaxSummaryBytes) throw InputError(path.string() + ": larger than 64 MB: not a summary vascsim wrote");
-  return io::parse_json_strictly(text, path.string());
 }
 
 void check_log_matches_summary(const std::string& run_path, std::size_t log_frames) {

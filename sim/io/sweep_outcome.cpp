@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "sim/io/json_fields.h"
-#include "sim/io/run_summary.h"
+#include "sim/io/run_summary_reader.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim {

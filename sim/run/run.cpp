@@ -372,6 +372,7 @@ bool Run::solve_equilibrium(FrameSink& sink) {
   stats_.newton_iterations_max = report.iterations;
   if (report.ok && report.negative_pivots > 0) stats_.warnings.unstable_equilibrium.note(1.0);
   if (report.ok && report.left_unstable) stats_.warnings.left_unstable.note(1.0);
+  if (report.ok && report.branch_jumps > 0) stats_.warnings.load_path_jumped.note(report.first_jump_load, report.branch_jumps);
   if (report.ok && report.stability_undecided) stats_.warnings.stability_undecided.note(1.0);
   if (report.ok) {
     // The load scale plays the part of time: 0 unloaded, 1 in equilibrium (docs/frame-log.md).

@@ -48,6 +48,7 @@ struct RunWarnings {
   WarningCount step_over_tolerance;   // error control: steps at a floor (dt_floor, dt_mean_min) kept over the tolerance
   WarningCount paper_contact_cap;     // paper contact: steps that hit contact.paper_iterations unsettled
   WarningCount unstable_equilibrium;  // static mode: the equilibrium found is unstable
+  WarningCount load_path_jumped;      // static mode: increments could not follow the stable branch and jumped
   WarningCount left_unstable;         // static mode: the load path's was, and the solve left it for a stable one
   WarningCount stability_undecided;   // static mode: the stiffness's eigenvalue nearest zero is within its round-off
 };

@@ -1,6 +1,7 @@
 #include "sim/step/statics.h"
 
 #include <cstdio>
+#include <optional>
 
 #include "sim/step/banded_ldlt.h"
 #include "sim/step/stability_margin.h"
@@ -40,6 +41,12 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
   // Negative pivots at the last accepted equilibrium (-1: not known, e.g. a singular matrix).
   p.load_scale = 0.0;
   int pivots = model.solver.stable_branch ? negative_pivots_at(model, p, x, ws) : -1;
+  // The last increment cut for leaving the stable branch, kept to fall back on.
+  struct Jump {
+    double load = 0.0, increment = 0.0;
+    Eigen::VectorXd x;
+  };
+  std::optional<Jump> jump;
   while (lambda < 1.0) {
     const double next = std::min(1.0, lambda + increment);
     p.load_scale = next;
@@ -56,6 +63,7 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
           // the saddle, and the search down from there the far, clockwise coil). A smaller
           // increment stays on the branch.
           ++report.stability_cuts;
+          jump = Jump{next, increment, ws.x};
           increment = std::max(min_increment, 0.5 * increment);
           continue;
         }
@@ -73,6 +81,20 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
     }
     ++report.rejected;
     increment *= 0.5;
+    if ((increment < min_increment || report.rejected > max_rejections) && jump && jump->load > lambda) {
+      // The smaller increments could not follow the branch where it turns (Newton failed on
+      // them): take the jump they were to avoid, as load stepping without the check would, and
+      // say so; the equilibrium reached may be on another branch than slower loading reaches.
+      // An imperfect column far past buckling (30 P_cr, 1e-2 P_cr aside) failed without this.
+      x = jump->x;
+      lambda = jump->load;
+      increment = jump->increment;
+      jump.reset();
+      pivots = -1;  // off the branch: no more cuts; an unstable end is left below
+      ++report.increments;
+      if (report.branch_jumps++ == 0) report.first_jump_load = lambda;
+      continue;
+    }
     if (increment < min_increment || report.rejected > max_rejections) {
       char buf[120];
       std::snprintf(buf, sizeof buf, "static solve stopped at load factor %.4g of 1: ", lambda);

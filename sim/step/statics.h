@@ -21,6 +21,11 @@ struct StaticReport {
   // Increments retried smaller because Newton went from a stable equilibrium to an unstable one
   // (with SolverSpec::stable_branch): it jumped off the branch the load was following.
   int stability_cuts = 0;
+  // Where even the smallest increments failed to follow the branch, the solve took the jump
+  // after all (as without the check): how often, and the load factor of the first. The
+  // equilibrium may then lie on another branch than slower loading would reach.
+  int branch_jumps = 0;
+  double first_jump_load = 0.0;
   int iterations = 0;        // Newton iterations over all increments
   double load_scale = 0.0;   // reached
   // Negative pivots of the Newton matrix at the equilibrium returned: its count of negative
