@@ -67,10 +67,9 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
           increment = std::max(min_increment, 0.5 * increment);
           continue;
         }
-        // Stable, or still unstable within the smallest increment: then the branch really ends or bifurcates
-        // here (a column at its buckling load). Newton follows the unstable root from here on
-        // (from a buckled shape this close to the bifurcation it does not converge), and the
-        // solve leaves it at full load, below.
+        // Stable; or unstable even within the smallest increment: the branch ends or bifurcates
+        // here (a column at its buckling load), the path goes on along the unstable root, and
+        // the solve leaves it at full load, below.
         pivots = reached;
       }
       x = ws.x;

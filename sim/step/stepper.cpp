@@ -36,9 +36,9 @@ struct EdgeTurn {
   double angle = 0.0;  // rad, its turn
 };
 
-// Whether an edge turns by more than kMaxEdgeTurn from `before` to `after` (2N positions, m).
-// By the cosine, one square root per edge and no arctangent: this runs at every step.
-EdgeTurn largest_edge_turn(const Eigen::VectorXd& before, const Eigen::VectorXd& after) {
+// The first edge that turns by more than kMaxEdgeTurn from `before` to `after` (2N positions,
+// m). By the cosine, one square root per edge and no arctangent: this runs at every step.
+EdgeTurn first_edge_turned_too_far(const Eigen::VectorXd& before, const Eigen::VectorXd& after) {
   static const double cos_limit = std::cos(kMaxEdgeTurn);
   EdgeTurn out;
   const Eigen::Index n = before.size() / 2;
@@ -49,8 +49,7 @@ EdgeTurn largest_edge_turn(const Eigen::VectorXd& before, const Eigen::VectorXd&
     if (dot >= cos_limit * std::sqrt(a.squaredNorm() * b.squaredNorm())) continue;
     out.over = true;
     out.edge = static_cast<int>(i);
-    out.angle = std::atan2(a.x() * b.y() - a.y() * b.x(), dot);
-    out.angle = std::abs(out.angle);
+    out.angle = std::abs(std::atan2(a.x() * b.y() - a.y() * b.x(), dot));
     return out;
   }
   return out;
@@ -133,7 +132,7 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
   if (out.negative_pivots > 0) {
     std::snprintf(why, sizeof why, "the step ends at a saddle of its incremental potential (%d negative pivots)",
                   out.negative_pivots);
-  } else if (const EdgeTurn turn = largest_edge_turn(state.x, ws.x); turn.over) {
+  } else if (const EdgeTurn turn = first_edge_turned_too_far(state.x, ws.x); turn.over) {
     std::snprintf(why, sizeof why, "edge %d turned by %.3g rad in the step, more than %.2g rad (the motion is not resolved)",
                   turn.edge, turn.angle, kMaxEdgeTurn);
   }
