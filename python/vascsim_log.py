@@ -70,6 +70,7 @@ class FrameLog:
             self.data_offset = (f.tell() + 7) // 8 * 8
         self.record_doubles = offset
         self._records = None
+        self._times_checked = 0
         self.refresh()
 
     def _exact(self, f, n):
@@ -103,13 +104,19 @@ class FrameLog:
         not finite, negative or before the previous frame's, as the C++ reader refuses them (a
         corrupt log would otherwise plot and interpolate silently wrong)."""
         t = self._records[:, 0]
-        bad = ~(np.isfinite(t) & (t >= 0))
-        bad[1:] |= ~(t[1:] >= t[:-1])
-        if bad.any():
-            i = int(np.argmax(bad))
-            why = "not a finite time >= 0" if not (np.isfinite(t[i]) and t[i] >= 0) else "before the previous frame's time"
-            raise ValueError("%s: frame %d has time %r s, %s (times must be finite, >= 0 and non-decreasing)"
-                             % (self.path, i, float(t[i]), why))
+        # Each frame is checked once (a growing log's new frames on the next call), so that
+        # indexing times in a loop stays cheap.
+        start = max(0, self._times_checked - 1)
+        if self.frame_count > self._times_checked:
+            part = t[start:]
+            bad = ~(np.isfinite(part) & (part >= 0))
+            bad[1:] |= ~(part[1:] >= part[:-1])
+            if bad.any():
+                i = start + int(np.argmax(bad))
+                why = "not a finite time >= 0" if not (np.isfinite(t[i]) and t[i] >= 0) else "before the previous frame's time"
+                raise ValueError("%s: frame %d has time %r s, %s (times must be finite, >= 0 and non-decreasing)"
+                                 % (self.path, i, float(t[i]), why))
+            self._times_checked = self.frame_count
         return t
 
     def channel_info(self, name):

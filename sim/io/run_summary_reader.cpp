@@ -13,6 +13,7 @@ using nlohmann::json;
 
 std::optional<json> read_run_summary(const std::string& run_dir) {
   namespace fs = std::filesystem;
+  // It holds the final state of every node: a few MB for the largest rods.
   constexpr std::size_t kMaxSummaryBytes = std::size_t(64) << 20;
   std::error_code ec;
   const fs::path path = fs::path(run_dir) / "summary.json";

@@ -20,7 +20,6 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-// summary.json holds the final state of every node: a few MB for the largest rods.
 // Reads a regular file of at most `limit` bytes (a larger one is read as its first `limit`
 // bytes, which then fail to parse: a message, not an allocation of whatever size it claims).
 bool read_small_file(const fs::path& path, std::string& text, std::size_t limit) {
