@@ -30,7 +30,9 @@ std::string describe(const json& value) {
   // Never dump what may be large or deep: a message quotes at most a short flat array.
   if (value.is_array()) {
     bool flat = value.size() <= 6;
-    for (const auto& item : value) flat = flat && item.is_primitive() && !item.is_string();
+    // Short strings too: ["0.6", 0.6] says more than "an array of 2" (the dump is capped below).
+    for (const auto& item : value)
+      flat = flat && item.is_primitive() && (!item.is_string() || item.get_ref<const std::string&>().size() <= 20);
     if (!flat) return "an array of " + std::to_string(value.size());
   }
   if (value.is_string() && value.get_ref<const std::string&>().size() > 60)
