@@ -50,6 +50,9 @@ const BadVessels kBad[] = {
      "/vessels/start: the inlet node \"j\" must end exactly one segment (the rod enters there), it ends 3"},
     {"not_connected", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(, {"from": "b", "to": "c", "radius": 0.04}], "start": "a", "goal": "c"}})",
      "/vessels/goal: \"c\" is not connected to the start \"a\""},
+    // Two names for one junction: the message says so.
+    {"junction_named_twice", R"({"vessels": {"nodes": {"a": [0, 0], "j": [0.5, 0], "k": [0.5, 0], "b": [1, 0.3]}, "segments": [)" TUBE("") R"(, {"from": "k", "to": "b", "radius": 0.04}], "start": "a", "goal": "b"}})",
+     "/vessels/goal: \"b\" is not connected to the start \"a\" (nodes \"j\" and \"k\" are at the same point but are two nodes: segments meet only at a node they both name)"},
     {"route_gap", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(, {"from": "j", "to": "b", "radius": 0.04}], "start": "a", "goal": "b", "route": ["a", "b"]}})",
      "/vessels/route/1: no segment joins \"a\" and \"b\""},
     {"stenosis_outside", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.45, "length": 0.2}])") R"(], "start": "a", "goal": "j"}})",

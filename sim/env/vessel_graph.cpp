@@ -233,8 +233,18 @@ std::vector<RouteStep> vessel_route(const VesselGraph& g, const VesselsSpec& spe
       }
     }
   }
-  if (!std::isfinite(dist[static_cast<std::size_t>(g.goal)]))
-    fail("/vessels/goal", "\"" + spec.goal + "\" is not connected to the start \"" + spec.start + "\"");
+  if (!std::isfinite(dist[static_cast<std::size_t>(g.goal)])) {
+    std::string hint;
+    // Two names for one junction is the likely slip: a node reached from the start at the same
+    // point as one that is not.
+    for (int a = 0; a < n && hint.empty(); ++a)
+      for (int b = 0; b < n && hint.empty(); ++b)
+        if (std::isfinite(dist[static_cast<std::size_t>(a)]) && !std::isfinite(dist[static_cast<std::size_t>(b)]) &&
+            g.positions[static_cast<std::size_t>(a)] == g.positions[static_cast<std::size_t>(b)])
+          hint = " (nodes " + quoted(g.names[static_cast<std::size_t>(a)]) + " and " + quoted(g.names[static_cast<std::size_t>(b)]) +
+                 " are at the same point but are two nodes: segments meet only at a node they both name)";
+    fail("/vessels/goal", "\"" + spec.goal + "\" is not connected to the start \"" + spec.start + "\"" + hint);
+  }
   for (int v = g.goal; v != g.start;) {
     const RouteStep step = via[static_cast<std::size_t>(v)];
     route.push_back(step);
