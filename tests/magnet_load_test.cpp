@@ -31,6 +31,19 @@ double exact_tip_angle(double a, double phi) {
   return 0.5 * (lo + hi);
 }
 
+// The rod's total turning from +x, unwrapped (rad): the first edge's heading plus every hinge's
+// turn; it tells a rod turned by 3 rad from one coiled the other way round to 3 - 2 pi.
+double total_turning(const State& s) {
+  const int n = static_cast<int>(s.x.size() / 2);
+  const Eigen::Vector2d first = s.position(1) - s.position(0);
+  double total = std::atan2(first.y(), first.x());
+  for (int i = 1; i + 1 < n; ++i) {
+    const Eigen::Vector2d e0 = s.position(i) - s.position(i - 1), e1 = s.position(i + 1) - s.position(i);
+    total += std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1));
+  }
+  return total;
+}
+
 struct Equilibrium {
   double tip_angle;    // rad, of the distal edge, unwrapped: the rod's total turning from +x
   double curvature_spread;  // max |kappa_i - kappa_mean| / kappa_mean over interior hinges
@@ -46,21 +59,16 @@ Equilibrium solve(double a, double phi, int nodes) {
   scene.solver.load_steps = 20;
   const State state = test::static_equilibrium(scene);
   const int n = scene.rod.nodes;
-  const Eigen::Vector2d first = state.position(1) - state.position(0);
   // Turning angle between consecutive edges from node 2 on (the centred clamp holds the first).
   std::vector<double> turn;
   for (int i = 2; i + 1 < n; ++i) {
     const Eigen::Vector2d e0 = state.position(i) - state.position(i - 1), e1 = state.position(i + 1) - state.position(i);
     turn.push_back(std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1)));
   }
-  double mean = 0.0, spread = 0.0, total = std::atan2(first.y(), first.x());
-  for (int i = 1; i + 1 < n; ++i) {
-    const Eigen::Vector2d e0 = state.position(i) - state.position(i - 1), e1 = state.position(i + 1) - state.position(i);
-    total += std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1));
-  }
+  double mean = 0.0, spread = 0.0;
   for (double t : turn) mean += t / turn.size();
   for (double t : turn) spread = std::max(spread, std::abs(t - mean) / std::abs(mean));
-  return {total, spread};
+  return {total_turning(state), spread};
 }
 
 // The distal edge's direction is the tangent at its midpoint, dl / 2 short of the tip, so the
@@ -124,8 +132,8 @@ TEST(MagnetLoad, WhereTheBranchTurnsTooSharplyTheSolveJumpsAndSaysSo) {
 // A field like it (a = 289) switched on at once on the rod at rest: its couple turns the tip
 // counter-clockwise from the start (m x B = m B sin(3) > 0), and the damped rod comes to rest
 // near the static equilibrium above; undamped and in a field ten times stronger it still never
-// turns clockwise. Steps that jumped instead went the other way: the fast preset's first 10 ms
-// step ended at a saddle of its incremental potential (-2.74 rad after 10 ms, then the far
+// turns clockwise. Steps that jumped instead went the other way: within the fast preset's first
+// 10 ms a step ended at a saddle of its incremental potential (-2.74 rad at 10 ms, then the far
 // coil), the balanced preset's 1 ms steps whipped the tip edge round by up to 2 rad each and
 // coiled the rod 1.5 turns clockwise (-9.49 rad). Such steps are now retried shorter
 // (sim/step/stepper.cpp); with a fixed dt they are kept and counted (summary.json
@@ -162,16 +170,9 @@ TEST(MagnetLoad, AStepOfTheMotionNeverJumps) {
     vascsim::Run run(compile(scene));
     struct TurningSink : FrameSink {
       const vascsim::Run* run = nullptr;
-      double least = 0.0, last = 0.0;  // rad, the rod's total turning (first edge's heading + bends)
+      double least = 0.0, last = 0.0;  // rad, total_turning over the frames
       void write(double, const std::vector<double>&) override {
-        const State& s = run->state();
-        const int n = static_cast<int>(s.x.size() / 2);
-        const Eigen::Vector2d first = s.position(1) - s.position(0);
-        double turning = std::atan2(first.y(), first.x());
-        for (int i = 1; i + 1 < n; ++i) {
-          const Eigen::Vector2d e0 = s.position(i) - s.position(i - 1), e1 = s.position(i + 1) - s.position(i);
-          turning += std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1));
-        }
+        const double turning = total_turning(run->state());
         least = std::min(least, turning);
         last = turning;
       }

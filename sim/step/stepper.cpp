@@ -125,7 +125,7 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
   // 1. A saddle of the step's incremental potential (inertia plus energy): the positions are a
   //    minimum only where the Newton matrix is positive definite, and a shorter step's larger
   //    inertia term m / (beta h)^2 makes it so. A rod against a strong field went round the
-  //    wrong way in the fast preset's first 10 ms step.
+  //    wrong way within the fast preset's first 10 ms.
   // 2. An edge turned by more than kMaxEdgeTurn: the rod whipped round within the step, and the
   //    balanced preset's 1 ms steps coiled that rod 1.5 turns the wrong way, each a minimum.
   char why[200] = "";
