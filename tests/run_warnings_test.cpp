@@ -85,5 +85,36 @@ TEST(RunWarnings, UnstableStaticEquilibriumIsCounted) {
   }
 }
 
+// The static load path that cannot follow its branch (a tip magnet in 10 T, 3 rad from the rod:
+// MagnetLoad.WhereTheBranchTurnsTooSharplyTheSolveJumpsAndSaysSo) is reported in summary.json,
+// dated by the load factor of the jump; 100 initial increments follow the branch and do not warn.
+// And a fixed 5 ms step that ends at a saddle (MagnetLoad.AStepOfTheMotionNeverJumps) is counted.
+TEST(RunWarnings, JumpsOfTheLoadPathAndUnresolvedStepsAreCounted) {
+  Scene magnet = test::cantilever(41);
+  magnet.solver = SolverSpec{};
+  magnet.solver.mode = SolveMode::kStatic;
+  magnet.loads.magnet.enabled = true;
+  magnet.loads.magnet.moment = 0.01;
+  magnet.loads.magnet.field = 10.0;
+  magnet.loads.magnet.angle = 3.0;
+  const auto jumped = warnings_of(magnet);
+  expect_count(jumped, "load_path_jumped", true);
+  EXPECT_GT(jumped["load_path_jumped"]["first_time"].get<double>(), 0.0);
+  EXPECT_LT(jumped["load_path_jumped"]["first_time"].get<double>(), 1.0);
+  magnet.solver.load_steps = 100;
+  expect_count(warnings_of(magnet), "load_path_jumped", false);
+
+  Scene fixed = test::cantilever(41);
+  fixed.solver = SolverSpec{};
+  apply_solver_preset("fast", fixed.solver);
+  fixed.solver.adaptive = StepControl::kOff;
+  fixed.solver.dt = 0.005;
+  fixed.loads.magnet = magnet.loads.magnet;
+  fixed.loads.magnet.field = 1.0;
+  fixed.run.duration = 0.01;
+  fixed.run.output_interval = 0.005;
+  expect_count(warnings_of(fixed), "unresolved_step", true);
+}
+
 }  // namespace
 }  // namespace vascsim

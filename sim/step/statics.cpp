@@ -55,6 +55,8 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
     report.iterations += out.iterations;
     if (out.converged) {
       if (pivots == 0) {
+        // At the converged point: Newton's own count (out.negative_pivots) is of the matrix at
+        // the iterate before, and near a turn of the branch the sign of a pivot can differ.
         const int reached = negative_pivots_at(model, p, ws.x, ws);
         if (reached > 0 && increment > min_increment && report.stability_cuts < max_rejections) {
           // Newton crossed from a stable equilibrium to an unstable one: from a shape far from

@@ -53,7 +53,8 @@ struct StaticReport {
 // (Newton jumped off the branch); where even the smallest one does (a bifurcation or the
 // branch's end) the path goes on along the unstable root, and the unstable equilibrium at full
 // load is left for a stable one; if that fails the unstable one is returned (report.ok,
-// negative_pivots > 0).
+// negative_pivots > 0). Where Newton fails on the smaller increments, the solve takes the cut
+// one after all and counts it (report.branch_jumps).
 StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls);
 
 }  // namespace vascsim
