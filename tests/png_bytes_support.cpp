@@ -26,10 +26,8 @@ void put_chunk(std::string& png, const std::string& type, const std::string& dat
   put_u32(png, crc32_of(body));
 }
 
-}  // namespace
-
-// An 8-bit PNG of colour type 0 (grey, 1 byte a pixel) or 2 (RGB, 3 bytes), rows from the top.
-std::string png_bytes(int width, int height, int colour_type, const std::vector<std::uint8_t>& pixels) {
+std::string png_with_palette(int width, int height, int colour_type, const std::vector<std::uint8_t>& pixels,
+                             const std::vector<std::uint8_t>& palette_rgb) {
   const int channels = colour_type == 2 ? 3 : colour_type == 4 ? 2 : colour_type == 6 ? 4 : 1;
   std::string raw;  // each row: filter type 0, then its bytes
   for (int y = 0; y < height; ++y) {
@@ -60,9 +58,21 @@ std::string png_bytes(int width, int height, int colour_type, const std::vector<
   ihdr += std::string{8, static_cast<char>(colour_type), 0, 0, 0};  // depth, colour, deflate, filter, no interlace
   std::string png = "\x89PNG\r\n\x1a\n";
   put_chunk(png, "IHDR", ihdr);
+  if (colour_type == 3) put_chunk(png, "PLTE", std::string(palette_rgb.begin(), palette_rgb.end()));
   put_chunk(png, "IDAT", z);
   put_chunk(png, "IEND", "");
   return png;
+}
+
+}  // namespace
+
+std::string png_bytes(int width, int height, int colour_type, const std::vector<std::uint8_t>& pixels) {
+  return png_with_palette(width, height, colour_type, pixels, {});
+}
+
+std::string indexed_png_bytes(int width, int height, const std::vector<std::uint8_t>& indices,
+                              const std::vector<std::uint8_t>& palette_rgb) {
+  return png_with_palette(width, height, 3, indices, palette_rgb);
 }
 
 }  // namespace vascsim::test

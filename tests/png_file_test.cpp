@@ -77,5 +77,27 @@ TEST(VesselMaskPng, RefusesMissingAndNonPngFilesNamingThem) {
   EXPECT_EQ(msg, dir + ": cannot read PNG (not a regular file)");
 }
 
+// stb_image keeps the palette in an uninitialised array: an index past the PLTE chunk's colours
+// read stack bytes (mask pixels that could differ between runs). Such a file is refused naming
+// the first pixel; a full palette, or indices within a short one, read as their colours.
+TEST(VesselMaskPng, RefusesAPaletteIndexPastThePaletteNamingThePixel) {
+  const std::string dir = test::fresh_temp_dir("vessel_mask_png_palette");
+  const std::vector<std::uint8_t> black_white = {0, 0, 0, 255, 255, 255};
+  std::ofstream(dir + "/within.png", std::ios::binary) << test::indexed_png_bytes(3, 1, {1, 0, 1}, black_white);
+  EXPECT_EQ(load_grey_png(dir + "/within.png").grey, (std::vector<std::uint8_t>{255, 0, 255}));
+  std::ofstream(dir + "/past.png", std::ios::binary) << test::indexed_png_bytes(3, 2, {1, 0, 1, 0, 0, 7}, black_white);
+  EXPECT_EQ(refusal(dir + "/past.png"),
+            dir + "/past.png: damaged PNG (pixel (2, 1) has a palette index past the 2 colours of its PLTE chunk)");
+  // A palette that already holds the colour the check would pick for the missing entries.
+  std::vector<std::uint8_t> crowded;
+  for (int r = 0; r < 200; ++r) crowded.insert(crowded.end(), {std::uint8_t(r), 0x5A, 0xA5});
+  std::ofstream(dir + "/crowded.png", std::ios::binary) << test::indexed_png_bytes(2, 1, {0, 199}, crowded);
+  const PngPixels rgb = read_png(dir + "/crowded.png", 3);
+  EXPECT_EQ(rgb.data, (std::vector<std::uint8_t>{0, 0x5A, 0xA5, 199, 0x5A, 0xA5}));
+  std::ofstream(dir + "/crowded_past.png", std::ios::binary) << test::indexed_png_bytes(2, 1, {0, 200}, crowded);
+  EXPECT_NE(refusal(dir + "/crowded_past.png").find("pixel (1, 0) has a palette index past the 200 colours"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace vascsim::io
