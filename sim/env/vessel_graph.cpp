@@ -31,6 +31,14 @@ std::string quoted(const std::string& name) { return "\"" + name + "\""; }
 
 std::string segment_pointer(std::size_t i) { return "/vessels/segments/" + std::to_string(i); }
 
+// A centreline that comes in along `in` and leaves along `out` reversed (anti-parallel to round-
+// off): the tube folds onto itself there and the reference path has no side to round the corner
+// to. Any sharper-than-zero turn short of that is a corner a vessel can have.
+bool turns_back(const Vec2& in, const Vec2& out) {
+  const double scale = in.norm() * out.norm();
+  return in.dot(out) < 0.0 && std::abs(in.x() * out.y() - in.y() * out.x()) <= 1e-9 * scale;
+}
+
 // Point and base radius (the linear taper) at arc length s along a polyline with radii.
 struct Profile {
   Polyline points;
@@ -70,6 +78,11 @@ Profile profile_of(const VesselSegmentSpec& seg, const Vec2& from, const Vec2& t
     }
     p.s.push_back(p.s.back() + step);
   }
+  for (std::size_t k = 1; k + 1 < p.points.size(); ++k)
+    if (turns_back(p.points[k] - p.points[k - 1], p.points[k + 1] - p.points[k]))
+      fail(segment_pointer(index) + "/via/" + std::to_string(k - 1),
+           "the segment turns back at [" + number(seg.via[k - 1].x()) + ", " + number(seg.via[k - 1].y()) +
+               "] along the line it came by (a 180 degree turn folds the vessel onto itself)");
   const std::string rp = segment_pointer(index) + "/radius";
   if (seg.radius.size() == 2) {
     for (double s : p.s) p.radius.push_back(seg.radius[0] + (seg.radius[1] - seg.radius[0]) * s / p.s.back());
@@ -206,6 +219,20 @@ std::vector<RouteStep> vessel_route(const VesselGraph& g, const VesselsSpec& spe
       if (best.segment < 0)
         fail("/vessels/route/" + std::to_string(i),
              "no segment joins \"" + spec.route[i - 1] + "\" and \"" + spec.route[i] + "\"");
+      // Travel directions just before and just after node i - 1 of the route.
+      if (!route.empty()) {
+        const auto& came = g.segments[static_cast<std::size_t>(route.back().segment)].samples;
+        const auto& goes = g.segments[static_cast<std::size_t>(best.segment)].samples;
+        const Vec2 in = route.back().forward ? came.back().point - came[came.size() - 2].point
+                                             : came.front().point - came[1].point;
+        const Vec2 out = best.forward ? goes[1].point - goes.front().point
+                                      : goes[goes.size() - 2].point - goes.back().point;
+        if (turns_back(in, out))
+          fail("/vessels/route/" + std::to_string(i),
+               "the route turns back from " + quoted(spec.route[i - 1]) + " to " + quoted(spec.route[i]) + " along " +
+                   (best.segment == route.back().segment ? "the segment" : "a segment overlapping the one") +
+                   " it came by: a catheter cannot turn round in a vessel");
+      }
       route.push_back(best);
     }
     return route;
