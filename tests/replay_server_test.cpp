@@ -354,6 +354,16 @@ TEST(ReplayServer, BookmarksAreSavedAndAForeignFileIsLeftAlone) {
   ASSERT_TRUE(refused);
   EXPECT_EQ(refused->status, 500);
   EXPECT_EQ(vascsim::test::read_text(run + "/bookmarks.json"), "my notes, not JSON");
+  // Keys another tool (or a later version) keeps in the file survive an added bookmark.
+  vascsim::test::write_text(run + "/bookmarks.json", R"({"format": "vascsim-bookmarks/1", "reviewer": "A. N. Other",
+      "bookmarks": [{"name": "entry", "t": 0.1, "view": "", "colour": "red"}]})");
+  const auto beside = s.post("/api/bookmarks", R"({"name": "exit", "t": 0.9})");
+  ASSERT_TRUE(beside);
+  ASSERT_EQ(beside->status, 200) << beside->body;
+  const json kept = json::parse(vascsim::test::read_text(run + "/bookmarks.json"));
+  EXPECT_EQ(kept["reviewer"], "A. N. Other");
+  EXPECT_EQ(kept["bookmarks"][0]["colour"], "red");
+  EXPECT_EQ(kept["bookmarks"][1]["name"], "exit");
 }
 
 TEST(ReplayServer, ExportWritesANewMp4EachTime) {

@@ -29,11 +29,12 @@ bool readable_name(const std::string& name) {
   }
   return characters >= 1 && characters <= 200 && visible;
 }
-}
 
-json load_bookmarks(const std::string& path) {
+// The whole file: other tools (or a later version) may keep their own keys beside "bookmarks",
+// and adding a bookmark keeps them.
+json load_bookmark_file(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return json::array();
+  if (!std::filesystem::exists(path, ec)) return json{{"format", "vascsim-bookmarks/1"}, {"bookmarks", json::array()}};
   if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > (16u << 20))
     throw InputError(path + ": not a bookmarks file (not a regular file of at most 16 MB); left untouched");
   std::ifstream in(path, std::ios::binary);
@@ -48,8 +49,12 @@ json load_bookmarks(const std::string& path) {
   if (!doc.is_object() || doc.value("format", "") != "vascsim-bookmarks/1" ||
       !doc.contains("bookmarks") || !doc["bookmarks"].is_array())
     throw InputError(path + ": not a vascsim-bookmarks/1 file; left untouched");
-  return doc["bookmarks"];
+  return doc;
 }
+
+}  // namespace
+
+json load_bookmarks(const std::string& path) { return load_bookmark_file(path)["bookmarks"]; }
 
 json add_bookmark(const std::string& path, const json& b) {
   if (!b.is_object()) throw ParamError("body", "expected a JSON object {\"name\", \"t\", \"view\"}");
@@ -61,10 +66,11 @@ json add_bookmark(const std::string& path, const json& b) {
     throw ParamError("view", "expected a string of at most 4096 characters");
   // Another server on this run may add one at the same moment: read, add and write in turn.
   const DirectoryLock lock(std::filesystem::path(path).parent_path().string());
-  json list = load_bookmarks(path);
+  json doc = load_bookmark_file(path);
+  json& list = doc["bookmarks"];
   if (list.size() >= kMaxBookmarks) throw ParamError("name", "this run already has 10000 bookmarks");
   list.push_back({{"name", b["name"]}, {"t", b["t"]}, {"view", b.value("view", "")}});
-  write_file_atomically(path, json{{"format", "vascsim-bookmarks/1"}, {"bookmarks", list}}.dump(2) + "\n");
+  write_file_atomically(path, doc.dump(2) + "\n");
   return list;
 }
 

@@ -116,7 +116,10 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   const std::string tmp = temporary_sibling(path);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
-  const bool written = std::fwrite(content.data(), 1, content.size(), f) == content.size();
+  // Flushed to the disk before the rename: after a power cut the final name holds the old
+  // content or the new, never an empty file.
+  const bool written = std::fwrite(content.data(), 1, content.size(), f) == content.size() && std::fflush(f) == 0 &&
+                       ::fsync(fileno(f)) == 0;
   const int saved_errno = errno;
   const bool closed = std::fclose(f) == 0;
   if (!written || !closed) {
