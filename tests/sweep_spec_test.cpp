@@ -116,6 +116,20 @@ TEST(SweepSpec, FixedOverridesApplyToEveryRunAndDefaultsCanBeSwept) {
                "/overrides/~1loads~1damping~1coefficient: /loads/damping/coefficient is also an axis");
 }
 
+// A sweep may switch a mode and set the fields of one of them: the runs where a field goes unused
+// run with a warning (sim/scene/unused_fields.h), not an error, and a field the base scene's
+// configuration leaves unused is still one an axis may set.
+TEST(SweepSpec, FieldsUnusedInSomeRunsAreSetAndReportedThere) {
+  const SweepPlan plan =
+      plan_of(sweep_with_axes(R"({"/solver/adaptive": ["error", "off"]})", R"(, "overrides": {"/solver/rtol": 1e-3})"));
+  ASSERT_EQ(plan.runs.size(), 2u);
+  EXPECT_TRUE(read_scene_text(plan.runs[0].scene_json, "run").unused_given.empty());
+  const Scene off = read_scene_text(plan.runs[1].scene_json, "run");
+  ASSERT_EQ(off.unused_given.size(), 1u);
+  EXPECT_EQ(off.unused_given[0].pointer, "/solver/rtol");
+  EXPECT_EQ(plan_of(sweep_with_axes(R"({"/solver/load_steps": [2, 4]})")).runs.size(), 2u);
+}
+
 TEST(SweepSpec, PointersThatOverlapAreRefused) {
   // One inside another would set a field twice: the run's value and the results' column could
   // disagree (an axis /loads/damping beside /loads/damping/coefficient, or an override inside an axis).

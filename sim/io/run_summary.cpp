@@ -53,6 +53,9 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   j["simulated_time"] = s.simulated_time;
   j["wall_time"] = s.wall_time;
   j["real_time_factor"] = s.wall_time > 0 && !is_static ? json(s.simulated_time / s.wall_time) : json(nullptr);
+  // Fields the scene file gave that its configuration does not use (the run warned of them).
+  j["unused_fields"] = json::array();
+  for (const UnusedField& u : scene.unused_given) j["unused_fields"].push_back({{"pointer", u.pointer}, {"why", u.why}});
   auto warning = [](const WarningCount& w) { return json{{"count", w.count}, {"first_time", number(w.first_time)}}; };
   j["warnings"] = {{"newton_round_off_stop", warning(s.warnings.newton_round_off)},
                    {"step_retried", warning(s.warnings.step_retried)},

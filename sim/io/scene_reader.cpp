@@ -9,6 +9,7 @@
 #include "sim/env/trajectory.h"
 #include "sim/io/scene_sections.h"
 #include "sim/scene/input_error.h"
+#include "sim/scene/unused_fields.h"
 
 namespace vascsim {
 
@@ -88,6 +89,8 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
         .fail("magnet", "no fixed-field magnet beside control mode \"field\" (the controller's field already turns the tip magnet)",
               root["loads"]["magnet"]);
   in.finish();
+  for (UnusedField& u : unused_fields(scene))
+    if (root.contains(json::json_pointer(u.pointer))) scene.unused_given.push_back(std::move(u));
   return scene;
 }
 
@@ -106,7 +109,9 @@ Scene read_scene_file(const std::string& path) {
   return read_scene_text(text, path);
 }
 
-std::string scene_to_json(const Scene& scene) {
+namespace {
+
+json scene_fields(const Scene& scene) {
   json root;
   root["format"] = "vascsim-scene/1";
   root["name"] = scene.name;
@@ -125,6 +130,24 @@ std::string scene_to_json(const Scene& scene) {
   root["boundary"] = io::write_boundary(scene.boundary);
   root["loads"] = io::write_loads(scene.loads);
   root["solver"] = io::write_solver(scene.solver);
+  return root;
+}
+
+}  // namespace
+
+std::string scene_fields_json(const Scene& scene) { return scene_fields(scene).dump(2); }
+
+std::string scene_to_json(const Scene& scene) {
+  json root = scene_fields(scene);
+  // What the configuration does not use is left out (a section left empty with it), so the
+  // text reads back without a warning and names only what the run depends on.
+  for (const UnusedField& u : unused_fields(scene)) {
+    const json::json_pointer field(u.pointer);
+    if (!root.contains(field)) continue;
+    json& parent = root[field.parent_pointer()];
+    parent.erase(field.back());
+    if (parent.empty() && field.parent_pointer().parent_pointer().empty()) root.erase(field.parent_pointer().back());
+  }
   return root.dump(2);
 }
 

@@ -18,7 +18,12 @@ Scene read_scene_file(const std::string& path);
 // Parses scene JSON text; `label` names the source in messages.
 Scene read_scene_text(const std::string& text, const std::string& label);
 // The scene as canonical JSON text with every default filled in (stored in frame logs and
-// summaries so that a run can be reproduced from its outputs alone).
+// summaries so that a run can be reproduced from its outputs alone), leaving out the fields its
+// configuration does not use.
 std::string scene_to_json(const Scene& scene);
+// As scene_to_json, but with the fields the scene's configuration does not use as well
+// (sim/scene/unused_fields.h): every field a file of this scene may set (what a sweep checks
+// its axes against).
+std::string scene_fields_json(const Scene& scene);
 
 }  // namespace vascsim

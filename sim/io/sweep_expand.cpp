@@ -97,14 +97,14 @@ std::string sweep_run_id(std::size_t index, std::size_t count) {
 }
 
 SweepPlan expand_sweep_with_scene(const SweepSpec& spec, const std::string& scene_text, const std::string& scene_label) {
-  // The base scene must itself be a valid scene; its canonical form lists every field.
+  // The base scene must itself be a valid scene; its fields (used or not) are what axes may set.
   Scene base;
   try {
     base = read_scene_text(scene_text, scene_label);
   } catch (const InputError& e) {
     throw InputError(spec.file + ": /scene: " + e.what());
   }
-  const json canonical = json::parse(scene_to_json(base));
+  const json canonical = json::parse(scene_fields_json(base));
   ordered_json doc = ordered_json::parse(scene_text);
   rebase_scene_paths(doc, fs::path(scene_label).parent_path());
 

@@ -132,7 +132,9 @@ void add_navigation_modules(const Scene& scene, Navigation& nav, Model& model) {
   }
   nav.actuation = make_actuation(scene.control);
   for (auto& module : nav.actuation->modules(n)) model.forces.push_back(std::move(module));
-  if (scene.control.disturbance.amplitude > 0.0 && scene.control.disturbance.kind == DisturbanceKind::kForce) {
+  // A kinematic tip's motion is imposed: a force on it would move nothing and only be logged.
+  if (scene.control.disturbance.amplitude > 0.0 && scene.control.disturbance.kind == DisturbanceKind::kForce &&
+      scene.control.mode != ActuationMode::kKinematic) {
     PointLoadSpec load;
     load.node = n - 1;
     load.force = scene.control.disturbance.amplitude * scene.control.disturbance.direction;

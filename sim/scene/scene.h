@@ -381,6 +381,12 @@ struct RunSpec {
   static constexpr double kMinOutputInterval = 1e-6;  // s
 };
 
+// A field of the scene file that the scene's own configuration does not use (sim/scene/unused_fields.h).
+struct UnusedField {
+  std::string pointer;  // JSON pointer of the field, e.g. "/contact/friction"
+  std::string why;      // the setting that leaves it unused, e.g. "contact.mode is \"paper\" (...)"
+};
+
 struct Scene {
   std::string file;  // where it was read from, for messages; empty for built-in scenes
   std::string name = "scene";
@@ -397,6 +403,9 @@ struct Scene {
   BoundarySpec boundary;
   LoadSpec loads;
   SolverSpec solver;
+  // Fields the file gave that this configuration does not use (set by the scene reader, which
+  // warns of them; the canonical text never holds them).
+  std::vector<UnusedField> unused_given;
 };
 
 }  // namespace vascsim
