@@ -78,6 +78,9 @@ class FrameSource {
   // Re-polls the log for frames appended since (a run still writing it). Returns true if the
   // frame count changed.
   bool refresh();
+  // The log's path now names another file, or the log holds fewer frames than it did (cut, or
+  // written over in place): this source's frames are no longer the run's.
+  bool replaced() const { return reader_.replaced() || reader_.frame_count() < frame_count_; }
   const FrameLogHeader& header() const { return reader_.header(); }
 
  private:

@@ -366,6 +366,42 @@ TEST(ReplayServer, BookmarksAreSavedAndAForeignFileIsLeftAlone) {
   EXPECT_EQ(kept["bookmarks"][1]["name"], "exit");
 }
 
+// A run repeated into the served directory (`vascsim run --force` removes the log and writes a
+// new one): the server served the old file's frames beside the new run's summary. It now opens
+// the run again, answers 409 while the new log has no frame, and counts the reopenings in
+// `generation` (also in each frame's header, so the page asks for a reload).
+TEST(ReplayServer, ALogReplacedUnderTheServerIsOpenedAgain) {
+  ScratchDir dir("replay_replaced");
+  const std::string run = synthetic_run(dir, "run");
+  LiveServer s({{run}});
+  json info = get_json(s, "/api/run");
+  EXPECT_EQ(info["frames"], 10);
+  EXPECT_EQ(info["generation"], 0);
+  EXPECT_EQ(json::parse(s.get("/api/frame.png?width=64&height=48")->get_header_value("X-Vascsim-View"))["generations"]["a"], 0);
+
+  fs::remove(run + "/frames.vlog");
+  const auto gone = s.get("/api/run");
+  ASSERT_TRUE(gone);
+  EXPECT_EQ(gone->status, 409) << gone->body;
+  EXPECT_NE(gone->body.find("was replaced since the server opened it"), std::string::npos) << gone->body;
+
+  render::write_synthetic_log(run + "/frames.vlog", long_spec());
+  info = get_json(s, "/api/run");
+  EXPECT_EQ(info["frames"], 101);
+  EXPECT_EQ(info["generation"], 1);
+  const auto frame = s.get("/api/frame.png?t=9&width=64&height=48");
+  ASSERT_TRUE(frame);
+  ASSERT_EQ(frame->status, 200) << frame->body;
+  EXPECT_EQ(json::parse(frame->get_header_value("X-Vascsim-View"))["generations"]["a"], 1);
+  EXPECT_DOUBLE_EQ(json::parse(frame->get_header_value("X-Vascsim-View"))["time"].get<double>(), 9.0);
+
+  // Cut in place to fewer frames than were served: opened again as well.
+  fs::resize_file(run + "/frames.vlog", fs::file_size(run + "/frames.vlog") / 2);
+  info = get_json(s, "/api/run");
+  EXPECT_EQ(info["generation"], 2);
+  EXPECT_LT(info["frames"].get<int>(), 101);
+}
+
 TEST(ReplayServer, ExportWritesANewMp4EachTime) {
   ScratchDir dir("replay_export");
   const std::string run = synthetic_run(dir, "run", long_spec());

@@ -37,7 +37,8 @@ constexpr int kStaleLogSeconds = 30;
 
 }  // namespace
 
-ReplayRun::ReplayRun(std::string id, const std::string& run_path) : id_(std::move(id)), path_(run_path) {
+ReplayRun::ReplayRun(std::string id, const std::string& run_path, int generation)
+    : id_(std::move(id)), path_(run_path), generation_(generation) {
   source_ = std::make_unique<render::FrameSource>(run_path);
   std::error_code ec;
   log_is_file_ = !fs::is_directory(run_path, ec);
@@ -96,6 +97,7 @@ json ReplayRun::info() const {
           {"last_time", s.last_time()},
           {"output_interval", m.output_interval},
           {"growing", growing_},
+          {"generation", generation_},
           {"summary", summary_},
           {"bounds", {{"min", pair(m.bounds.min.x(), m.bounds.min.y())}, {"max", pair(m.bounds.max.x(), m.bounds.max.y())}}},
           {"layers", layers},

@@ -22,10 +22,13 @@ namespace vascsim::replay {
 
 class ReplayRun {
  public:
-  // `id` is "a" or "b"; `run_path` a run directory or a frame log file. Throws InputError.
-  ReplayRun(std::string id, const std::string& run_path);
+  // `id` is "a" or "b"; `run_path` a run directory or a frame log file; `generation` counts
+  // the times the server opened this run again because its log was replaced (0 at start).
+  // Throws InputError.
+  ReplayRun(std::string id, const std::string& run_path, int generation = 0);
 
   const std::string& id() const { return id_; }
+  int generation() const { return generation_; }
   const std::string& path() const { return path_; }
   render::FrameSource& source() { return *source_; }
   const render::FrameSource& source() const { return *source_; }
@@ -60,6 +63,7 @@ class ReplayRun {
   void scan(std::size_t first, Visit visit) const;
 
   std::string id_, path_, run_dir_;
+  int generation_ = 0;
   bool log_is_file_ = false;
   std::unique_ptr<render::FrameSource> source_;
   bool growing_ = false;

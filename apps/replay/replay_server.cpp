@@ -33,6 +33,12 @@ using nlohmann::json;
 
 namespace {
 
+// The run's log was replaced and the new one cannot be opened yet (HTTP 409).
+class RunReplaced : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 // 128 random bits as hex, from the OS's entropy source.
 std::string random_token() {
   std::random_device rd;
@@ -128,11 +134,27 @@ struct ReplayServer::Impl {
     return false;
   }
 
+  // Run k as its directory holds it now: a log replaced since it was opened (the run repeated
+  // with --force into the same directory) is opened again, so no request mixes the old run's
+  // frames with the new one's summary; the page sees the generation change and asks for a reload.
+  ReplayRun& current(std::size_t k) {
+    ReplayRun& run = *runs[k];
+    if (!run.source().replaced()) return run;
+    try {
+      runs[k] = std::make_unique<ReplayRun>(run.id(), run.path(), run.generation() + 1);
+    } catch (const InputError& e) {
+      throw RunReplaced("run " + run.id() + ": " + run.source().log_path() +
+                        " was replaced since the server opened it (a new run in its directory?) and cannot be read yet (" +
+                        e.what() + "); try again when the new run has written a frame");
+    }
+    return *runs[k];
+  }
+
   ReplayRun& run_of(const RequestParams& p) {
     std::vector<std::string> ids;
     for (const auto& r : runs) ids.push_back(r->id());
     const std::string id = p.choice("run", "a", ids);
-    return *runs[id == "a" ? 0 : 1];
+    return current(id == "a" ? 0 : 1);
   }
 
   // The `overlay` parameter: "b", the second run drawn over run a's map; none when absent.
@@ -141,7 +163,7 @@ struct ReplayServer::Impl {
     if (!o) return nullptr;
     if (runs.size() < 2 || *o != "b" || run.id() != "a")
       throw ParamError("overlay", "expected b (the second run, drawn over run a's map; needs two runs)");
-    return runs[1].get();
+    return &current(1);
   }
 
   double time_of(const RequestParams& p, const ReplayRun& run) const {
@@ -153,11 +175,14 @@ struct ReplayServer::Impl {
     const render::View view = parse_view(p);
     std::vector<std::uint8_t> rgba;
     render::ViewFrameInfo info;
+    json generations = json::object();  // of the runs drawn, for the page to notice a replaced one
     {
       std::lock_guard<std::mutex> lock(data_mutex);
       ReplayRun& run = run_of(p);
       const double t = time_of(p, run);
       ReplayRun* overlay = overlay_of(p, run);
+      generations[run.id()] = run.generation();
+      if (overlay) generations[overlay->id()] = overlay->generation();
       run.refresh();
       if (overlay) overlay->refresh();
       render::ViewFrameInputs in;
@@ -174,7 +199,8 @@ struct ReplayServer::Impl {
     res.set_header("X-Vascsim-View", json{{"time", info.time},
                                           {"scale", info.transform.scale},
                                           {"ox", info.transform.ox},
-                                          {"oy", info.transform.oy}}
+                                          {"oy", info.transform.oy},
+                                          {"generations", generations}}
                                          .dump());
     res.set_content(std::string(png.begin(), png.end()), "image/png");
   }
@@ -272,17 +298,18 @@ struct ReplayServer::Impl {
     const RequestParams p(req.params);
     std::lock_guard<std::mutex> lock(data_mutex);
     if (runs.size() < 2) throw ParamError("run", "compare needs two runs (vascsim replay RUN_A RUN_B)");
-    const double t = time_of(p, *runs[0]);
+    const double t = time_of(p, current(0));
     json body = {{"time", t}};
     Vec2 tip[2];
-    for (int k = 0; k < 2; ++k) {
-      runs[k]->refresh();
+    for (std::size_t k = 0; k < 2; ++k) {
+      ReplayRun& run = current(k);
+      run.refresh();
       render::FrameState state;
-      runs[k]->source().at_time(t, state);
+      run.source().at_time(t, state);
       tip[k] = state.tip();
-      const std::string id = runs[k]->id();
+      const std::string id = run.id();
       body["tip_" + id] = {tip[k].x(), tip[k].y()};
-      body["clamped_" + id] = t < runs[k]->source().first_time() || t > runs[k]->source().last_time();
+      body["clamped_" + id] = t < run.source().first_time() || t > run.source().last_time();
     }
     body["tip_distance"] = (tip[0] - tip[1]).norm();
     send_json(res, body);
@@ -397,6 +424,8 @@ struct ReplayServer::Impl {
       send_error(res, 400, e.what(), e.parameter());
     } catch (const ExportsBusy& e) {
       send_error(res, 429, e.what());
+    } catch (const RunReplaced& e) {
+      send_error(res, 409, e.what());
     } catch (const InputError& e) {
       send_error(res, 500, e.what());
     } catch (const std::exception& e) {

@@ -1,5 +1,7 @@
 #include "sim/log/frame_log.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -227,6 +229,13 @@ std::size_t FrameLogReader::frame_count() const {
   if (end < 0 || static_cast<std::uint64_t>(end) < data_offset_) return 0;
   const std::uint64_t record_bytes = header_.record_doubles() * sizeof(double);
   return static_cast<std::size_t>((static_cast<std::uint64_t>(end) - data_offset_) / record_bytes);
+}
+
+bool FrameLogReader::replaced() const {
+  struct stat open_file {}, named {};
+  if (::fstat(fileno(file_), &open_file) != 0) return false;
+  if (::stat(path_.c_str(), &named) != 0) return true;  // removed, and not (yet) written again
+  return open_file.st_ino != named.st_ino || open_file.st_dev != named.st_dev;
 }
 
 void FrameLogReader::read(std::size_t i, std::vector<double>& record) const {

@@ -104,6 +104,9 @@ class FrameLogReader {
   const std::string& path() const { return path_; }
   // Complete frames in the file now; a growing log can be re-polled.
   std::size_t frame_count() const;
+  // The path no longer names the file this reader opened: it was removed, or a new file took its
+  // name (a run repeated with --force into the same directory). The reader still reads the old.
+  bool replaced() const;
   // Reads frame i (time first, then channels in order) into `record`.
   void read(std::size_t i, std::vector<double>& record) const;
   double time_of(std::size_t i) const;

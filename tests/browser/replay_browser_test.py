@@ -773,6 +773,21 @@ def check_live(driver, exe, run, shots, workdir):
         R.check(True, 'live: the badge goes when summary.json appears')
         page.wait(lambda d: 'goal' in d.find_element(By.ID, 'summary').text, 'the summary to be shown')
         R.check(True, 'live: the summary is shown when it appears')
+        # The run repeated into its directory (vascsim run --force): a new file under the log's
+        # name. The server opens it again; the page, told so by the next frame, asks for a reload.
+        with open(log + '.new', 'wb') as f:
+            f.write(whole)
+        os.replace(log + '.new', log)
+        page.keys(Keys.HOME)
+        page.wait(lambda d: 'reload the page' in d.find_element(By.ID, 'status-line').text,
+                  'the page to ask for a reload')
+        R.check(True, 'replaced: a log replaced on disk makes the page ask for a reload')
+        page.shot(shots, 'replaced.png')
+        page.open(api.page)
+        R.check(page.js('return window.vascsimReplay.state().range[1]') == api.get('/api/run')['last_time']
+                and api.get('/api/run')['generation'] == 1
+                and 'reload' not in driver.find_element(By.ID, 'status-line').text,
+                'replaced: after the reload the page shows the new log, without the message')
         page.collect_log()
         R.check(not page.severe, 'no JS errors in the browser log (live)', '; '.join(page.severe[:5]))
     finally:

@@ -228,6 +228,7 @@
         this.failedUrl = null;
         this.view = view;
         if (view) learnCentre(params, view);
+        if (view) noticeReplacedRuns(view.generations);
         this.applyPreview();
         onFrameShown(this);
       } catch (e) {
@@ -1152,6 +1153,15 @@
       compareBusy = false;
       if (compareShownT !== S.t) updateCompare();
     }
+  }
+
+  // ------------------------------------------------------------------ a run replaced on disk
+  // The server opens a run again when its log was replaced (the run repeated with --force into
+  // its directory); this page's timeline, plots and bookmarks describe the old one.
+  function noticeReplacedRuns(generations) {
+    for (const [r, g] of Object.entries(generations || {}))
+      if (S.info[r] && S.info[r].generation !== g)
+        showError(`run ${r} was replaced on disk (a new run in its directory): reload the page to view it`);
   }
 
   // ------------------------------------------------------------------ live follow
