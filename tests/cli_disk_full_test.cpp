@@ -1,6 +1,7 @@
 // `vascsim run` onto a full disk (a small tmpfs, as root; tests/tmpfs_support.h): it stops with
 // exit 2 and a message naming the log and the system's reason, the log keeps every frame it
-// completed and renders to the last of them, and nothing partial stands under a final name.
+// completed and renders to the last of them, and nothing partial stands under a final name; a
+// sweep whose run meets a full disk says how the run ended.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -37,6 +38,23 @@ TEST(DiskFull, RunStopsWithExit2AndKeepsEveryCompletedFrame) {
   // No summary claims a result, and no temporary file is left behind.
   for (const auto& e : fs::directory_iterator(out))
     EXPECT_EQ(e.path().filename(), "frames.vlog") << "unexpected " << e.path();
+  fs::remove_all(dir);
+}
+
+// A sweep's run on a full disk: its run.log could not take its message, nor its directory the
+// status; the sweep said only "status.json: cannot write". It now says how the run ended.
+TEST(DiskFull, ASweepSaysHowTheRunEndedWhenItsStatusCannotBeWritten) {
+  SmallTmpfs disk("sweep", 96 * 1024);
+  ASSERT_TRUE(disk.ok()) << disk.error();
+  const std::string dir = fresh_temp_dir("disk_full_sweep");
+  write_text(dir + "/scene.json",
+             R"({"maze": null, "rod": {"nodes": 20}, "run": {"duration": 5, "output_interval": 0.001}})");
+  write_text(dir + "/sweep.json", R"({"format": "vascsim-sweep/1", "scene": "scene.json", "axes": {"/rod/length": [0.4]}})");
+  const CommandResult r = run_vascsim("sweep " + dir + "/sweep.json --out " + disk.path() + "/out --quiet");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("run 0000 ended with exit code 2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("status.json: cannot write (No space left on device)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("running the sweep again repeats it"), std::string::npos) << r.output;
   fs::remove_all(dir);
 }
 

@@ -87,7 +87,11 @@ TEST(SweepSpec, RangesGiveIntegersStepsCountsAndLogScales) {
   EXPECT_EQ(values(R"({"from": 0, "to": 10, "step": 4})"), (std::vector<std::string>{"0", "4", "8"}));
   // Round-off neither drops the last value nor shows in the values.
   EXPECT_EQ(values(R"({"from": 0.1, "to": 0.3, "step": 0.1})"), (std::vector<std::string>{"0.1", "0.2", "0.3"}));
-  EXPECT_EQ(values(R"({"from": 0, "to": 1, "count": 3})"), (std::vector<std::string>{"0.0", "0.5", "1.0"}));
+  // Between integer bounds, values on integers are integers: an integer field takes them.
+  EXPECT_EQ(values(R"({"from": 0, "to": 1, "count": 3})"), (std::vector<std::string>{"0", "0.5", "1"}));
+  EXPECT_EQ(values(R"({"from": 5, "to": 9, "count": 3})"), (std::vector<std::string>{"5", "7", "9"}));
+  EXPECT_EQ(values(R"({"from": 10, "to": 1000, "count": 3, "scale": "log"})"), (std::vector<std::string>{"10", "100", "1000"}));
+  EXPECT_EQ(values(R"({"from": 0.0, "to": 1.0, "count": 3})"), (std::vector<std::string>{"0.0", "0.5", "1.0"}));
   EXPECT_EQ(values(R"({"from": 0.001, "to": 0.1, "count": 3, "scale": "log"})"),
             (std::vector<std::string>{"0.001", "0.01", "0.1"}));
 }

@@ -116,6 +116,7 @@ double RunProcess::elapsed() const {
 }
 
 void RunProcess::finish(int wait_status, double cpu_time, bool interrupted) {
+  std::string failure;
   if (!interrupted) {
     RunStatusRecord s;
     if (WIFSIGNALED(wait_status)) s.signal = WTERMSIG(wait_status);
@@ -124,11 +125,22 @@ void RunProcess::finish(int wait_status, double cpu_time, bool interrupted) {
     s.cpu_time = cpu_time;
     char host[256] = {0};
     if (::gethostname(host, sizeof host - 1) == 0) s.host = host;
-    write_file_atomically(run_dir_ + "/status.json", run_status_json(s));
+    try {
+      write_file_atomically(run_dir_ + "/status.json", run_status_json(s));
+    } catch (const InputError& e) {
+      // On a full disk the run's own message (its run.log) is lost as well: say how it ended.
+      const bool ok = s.exit_code == 0 && s.signal == 0;
+      failure = "run " + id_ + (s.signal ? " was killed by signal " + std::to_string(s.signal)
+                                         : " ended with exit code " + std::to_string(s.exit_code)) +
+                (ok ? "" : " (its own message may be lost too: " + run_dir_ + "/run.log)") +
+                ", and its status could not be recorded: " + e.what() +
+                "; it counts as not run, and running the sweep again repeats it";
+    }
   }
   pid_ = -1;
   if (lock_fd_ >= 0) ::close(lock_fd_);
   lock_fd_ = -1;
+  if (!failure.empty()) throw InputError(failure);
 }
 
 }  // namespace vascsim::sweep

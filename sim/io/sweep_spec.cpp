@@ -58,21 +58,24 @@ std::vector<std::string> read_range(const json& range, const std::string& label,
   if (scale == "log" && !(from > 0)) in.fail("from", "a number > 0 with \"scale\": \"log\"", range["from"]);
   const long long max_count = static_cast<long long>(kMaxSweepRuns);
   std::vector<std::string> values;
-  if (in.has("count")) {
-    const long long count = in.integer("count", 2, 1, max_count);
-    if (count == 1 && to != from) in.fail("count", "an integer >= 2 when \"to\" differs from \"from\"", range["count"]);
-    for (long long i = 0; i < count; ++i) {
-      const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
-      const double x = scale == "log" ? from * std::pow(to / from, f) : from + f * (to - from);
-      values.push_back(json(round12(i == count - 1 ? to : x)).dump());
-    }
-    in.finish();
-    return values;
-  }
   // Integer bounds and step give integers (seeds, node counts); 2^53 keeps them exact as doubles.
   const auto exact_integer = [&](const char* key) {
     return range[key].is_number_integer() && std::fabs(range[key].get<double>()) <= 9007199254740992.0;
   };
+  if (in.has("count")) {
+    const long long count = in.integer("count", 2, 1, max_count);
+    if (count == 1 && to != from) in.fail("count", "an integer >= 2 when \"to\" differs from \"from\"", range["count"]);
+    // Between integer bounds, a value that falls on an integer is one (5 to 9 in 3 values is
+    // 5, 7, 9, which an integer field takes; it was 5.0, 7.0, 9.0, which it refuses).
+    const bool integer_bounds = exact_integer("from") && exact_integer("to");
+    for (long long i = 0; i < count; ++i) {
+      const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
+      const double x = round12(i == count - 1 ? to : scale == "log" ? from * std::pow(to / from, f) : from + f * (to - from));
+      values.push_back(integer_bounds && x == std::round(x) ? json(static_cast<long long>(x)).dump() : json(x).dump());
+    }
+    in.finish();
+    return values;
+  }
   const bool integers = exact_integer("from") && exact_integer("to") && (!in.has("step") || exact_integer("step"));
   const double step = in.positive("step", 1.0);
   // A step that does not divide the span stops at the last value <= "to" (the tolerance keeps
