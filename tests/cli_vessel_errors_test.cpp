@@ -72,6 +72,10 @@ const BadVessels kBad[] = {
     // Exactly the rod's width (0.04 of 100 mm; rounding made it 4 nm wider and it passed).
     {"as_narrow_as_rod", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.25, "length": 0.2, "fraction": 0.04}])") R"(], "start": "a", "goal": "j"}})",
      "/vessels: the lumen on the route narrows to 4 mm across at (0.25, 0) m, not wider than the rod (4 mm across, /rod/outer_radius)"},
+    // A vessel behind the inlet: the rod's straight way in crossed it, and the union joined it
+    // to the inlet.
+    {"way_in_across_a_vessel", R"({"vessels": {"nodes": {"a": [0.5, 0.5], "b": [1, 0.5], "c": [0.3, 0.2], "d": [0.3, 0.8]}, "segments": [{"from": "a", "to": "b", "radius": 0.05}, {"from": "c", "to": "d", "radius": 0.05}], "start": "a", "goal": "b"}})",
+     "/vessels/start: the rod's way in (straight back from the start along the inlet for the rod's length, 0.5 m) crosses the lumen at (0.35, 0.5) m"},
     {"maze_and_vessels", R"({"maze": {}, "vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j"}})",
      "/maze: expected no \"maze\" beside \"vessels\" (a scene has one environment), got an object"},
     // Found by the scene fuzz harness: a far point overflowed the lumen's integer geometry

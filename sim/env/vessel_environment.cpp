@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "sim/env/vessel_graph.h"
 #include "sim/env/vessel_lumen.h"
@@ -55,10 +57,45 @@ Polyline introducer(const Inlet& inlet, double radius, double rod_length, double
   return tapered_tube_ring(back, radius, inlet.tip, radius, chord_error);
 }
 
+// Where segments p0-p1 and q0-q1 cross (proper or touching), if they do.
+bool segments_cross(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1, Vec2& at) {
+  const Vec2 d = p1 - p0, e = q1 - q0, w = q0 - p0;
+  const double denom = d.x() * e.y() - d.y() * e.x();
+  if (denom == 0.0) return false;  // parallel: a wall along the axis is not a vessel across it
+  const double t = (w.x() * e.y() - w.y() * e.x()) / denom, u = (w.x() * d.y() - w.y() * d.x()) / denom;
+  if (t < 0.0 || t > 1.0 || u < 0.0 || u > 1.0) return false;
+  at = p0 + t * d;
+  return true;
+}
+
+// The introducer must leave the network through nothing but the inlet: across another vessel,
+// the union would join that vessel to the inlet (a way round the route) and the rod would start
+// drawn through its walls. Its axis is checked from its far end to three inlet radii behind the
+// start, clear of the inlet vessel's own round end.
+void refuse_an_introducer_across_the_lumen(const Inlet& inlet, double radius, double rod_length,
+                                           const std::vector<Polyline>& pieces) {
+  const Vec2 far = inlet.tip - (rod_length + 2.0 * radius) * inlet.inward;
+  const Vec2 near = inlet.tip - 3.0 * radius * inlet.inward;
+  if ((near - inlet.tip).dot(far - near) <= 0.0) return;  // a rod shorter than that: nothing to check
+  for (const Polyline& ring : pieces)
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      Vec2 at;
+      if (!segments_cross(far, near, ring[k], ring[(k + 1) % ring.size()], at)) continue;
+      char text[400];
+      std::snprintf(text, sizeof text,
+                    "the rod's way in (straight back from the start along the inlet for the rod's length, %g m) "
+                    "crosses the lumen at (%g, %g) m: choose a start whose vessel runs straight out of the "
+                    "network for that length, or a shorter rod",
+                    rod_length, at.x(), at.y());
+      throw InputError(std::string("/vessels/start: ") + text);
+    }
+}
+
 // What graph and mask share once their lumen pieces and centreline are known.
 void finish(Environment& env, std::vector<Polyline> pieces, double rounding, double chord_error, double rod_length) {
   const Polyline& c = env.centreline;
   const std::vector<double>& r = env.centreline_radius;
+  refuse_an_introducer_across_the_lumen(env.inlet, r.front(), rod_length, pieces);
   pieces.push_back(introducer(env.inlet, r.front(), rod_length, chord_error));
   env.lumen = lumen_union(pieces, rounding, chord_error);
   env.walls = walls_along(env.lumen);
