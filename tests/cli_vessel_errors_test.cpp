@@ -2,6 +2,8 @@
 // message names the file and the JSON path, the exit code is 2, and nothing is written.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -181,6 +183,18 @@ TEST(VesselsCommand, WritesTheNetworkAndRefusesAMaze) {
   const std::string doc = read_text(dir + "/n.json");
   for (const char* key : {"\"format\": \"vascsim-vessels/1\"", "\"lumen\"", "\"walls\"", "\"graph\"", "\"route\"", "\"samples\""})
     EXPECT_NE(doc.find(key), std::string::npos) << key;
+  // Corner radii per centreline point: the junction's a length, null where there is no corner
+  // (the ends; a straight via point, below), not the internal placeholder 1e6 m.
+  const auto corners = nlohmann::json::parse(doc)["path"]["corner_radius"];
+  ASSERT_EQ(corners.size(), 3u) << corners.dump();
+  EXPECT_TRUE(corners[0].is_null() && corners[2].is_null()) << corners.dump();
+  EXPECT_GT(corners[1].get<double>(), 0.0);
+  EXPECT_LT(corners[1].get<double>(), 1.0);
+  write_text(dir + "/straight.json", R"({"vessels": {"nodes": {"a": [0, 0], "b": [1, 0]}, "segments": [{"from": "a", "to": "b",
+    "via": [[0.5, 0]], "radius": 0.05}], "start": "a", "goal": "b"}})");
+  r = run_vascsim("vessels --scene " + dir + "/straight.json --out " + dir + "/s.json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(nlohmann::json::parse(read_text(dir + "/s.json"))["path"]["corner_radius"].dump(), "[null,null,null]");
   // Deterministic, and an existing file is kept without --force.
   r = run_vascsim("vessels --scene " + source_path("scenes/bifurcation.json") + " --out " + dir + "/n.json");
   EXPECT_EQ(r.exit_code, 2) << r.output;

@@ -37,8 +37,10 @@ struct Environment {
   Polyline centreline;                 // m, the sharp reference centreline, start to goal
   std::vector<double> centreline_radius;  // m, lumen radius at each centreline point
   // m, per centreline point: the largest corner rounding the lumen allows there; empty: the
-  // scene's path.corner_radius everywhere (mazes).
+  // scene's path.corner_radius everywhere (mazes). Where the centreline does not turn (a straight
+  // point) any radius fits: kStraightCornerRadius; at the two ends there is no corner: 0.
   std::vector<double> corner_radius;
+  static constexpr double kStraightCornerRadius = 1e6;
   double goal_radius = 0.0;            // m, lumen radius at the goal (the goal test's scale)
   std::optional<GridMaze> grid;    // generated mazes only
 };

@@ -45,7 +45,8 @@ std::vector<double> corner_allowance(const Polyline& line, const std::vector<dou
     if (cos_half <= 1e-6) continue;  // a reversal stays sharp
     const double sec = 1.0 / cos_half;
     const double narrowest = std::min({radius[i - 1], radius[i], radius[i + 1]});
-    out[i] = sec - 1.0 <= 1e-12 ? 1e6 : std::min(1e6, narrowest * (sec - kCornerClearance) / (sec - 1.0));
+    constexpr double straight = Environment::kStraightCornerRadius;
+    out[i] = sec - 1.0 <= 1e-12 ? straight : std::min(straight, narrowest * (sec - kCornerClearance) / (sec - 1.0));
   }
   return out;
 }

@@ -67,10 +67,17 @@ std::string vessels_document(const Scene& scene) {
                    {"height", scene.vessels.mask.height}, {"pixel_size", scene.vessels.mask.pixel_size}};
   else
     doc["graph"] = graph_json(scene.vessels);
+  // null where the centreline has no corner to round: its ends and points where it runs straight
+  // (their internal radius, kStraightCornerRadius, is a placeholder, not a length to read).
+  json corners = json::array();
+  for (std::size_t i = 0; i < env.corner_radius.size(); ++i) {
+    const bool corner = i > 0 && i + 1 < env.corner_radius.size() && env.corner_radius[i] < Environment::kStraightCornerRadius;
+    corners.push_back(corner ? json(env.corner_radius[i]) : json(nullptr));
+  }
   doc["path"] = io::route_timing_json(scene.path, trajectory);
   doc["path"].update({{"centreline", io::to_json(env.centreline)},
                       {"radius", env.centreline_radius},
-                      {"corner_radius", env.corner_radius},
+                      {"corner_radius", corners},
                       {"narrowest_diameter", env.lumen_width}});
   return doc.dump(1) + "\n";
 }
