@@ -9,6 +9,7 @@
 #include <random>
 
 #include "sim/step/banded_ldlt.h"
+#include "sim/step/sparse_solve.h"
 
 namespace vascsim {
 namespace {
@@ -56,6 +57,30 @@ TEST(BandedLdlt, SolvesIndefiniteSystemAndCountsNegativeEigenvalues) {
   banded_ldlt_solve(a, b);
   EXPECT_LT((dense * b - Eigen::VectorXd::Ones(n)).lpNorm<Eigen::Infinity>(), 1e-9);
   EXPECT_LT((b - expected).lpNorm<Eigen::Infinity>(), 1e-8 * std::max(1.0, expected.lpNorm<Eigen::Infinity>()));
+}
+
+// With entries beyond the band (self-contact), the sparse LDL^T under a fill-reducing ordering
+// must count the same negative eigenvalues as the dense matrix has.
+TEST(SparseLdlt, CountsNegativeEigenvaluesWithOffBandEntries) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (double shift : {12.0, 2.0, 0.5}) {
+    const int n = 80;
+    BandedMatrix a = random_band(n, shift, rng);
+    OffBandEntries extra;
+    for (int k = 0; k < 12; ++k) extra.emplace_back(40 + k, k, 0.8 * u(rng));  // rows below columns: lower
+    Eigen::MatrixXd dense = a.to_dense();
+    for (const auto& e : extra) dense(e.row(), e.col()) += e.value(), dense(e.col(), e.row()) += e.value();
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(dense);
+    const int negative = static_cast<int>((eig.eigenvalues().array() < 0.0).count());
+    Eigen::VectorXd b = Eigen::VectorXd::Ones(n);
+    int counted = -1;
+    ASSERT_TRUE(sparse_ldlt_solve(a, extra, std::vector<char>(n, 0), b, &counted)) << shift;
+    EXPECT_EQ(counted, negative) << "shift " << shift;
+    EXPECT_LT((dense * b - Eigen::VectorXd::Ones(n)).lpNorm<Eigen::Infinity>(), 1e-8) << shift;
+    if (shift > 10) EXPECT_EQ(counted, 0);
+    else EXPECT_GT(counted, 0) << "the rig must be indefinite at shift " << shift;
+  }
 }
 
 TEST(BandedLdlt, ReportsSingularMatrix) {

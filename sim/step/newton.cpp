@@ -196,8 +196,7 @@ NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace
       out.negative_pivots = f.negative_pivots;
     } else {
       factored_without_off_band = false;
-      out.negative_pivots = -1;
-      if (!sparse_ldlt_solve(ws.jacobian, ws.off_band, ws.fixed, ws.dx)) {
+      if (!sparse_ldlt_solve(ws.jacobian, ws.off_band, ws.fixed, ws.dx, &out.negative_pivots)) {
         out.failure = "singular Newton matrix (with self-contact)";
         return out;
       }

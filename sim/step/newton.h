@@ -69,8 +69,8 @@ struct NewtonOutcome {
   double scale = 0.0;         // N, force scale at the end
   bool round_off_stop = false;  // stopped because the update fell below round-off
   bool correction_stop = false;  // stopped by correction_tol
-  // Negative pivots of the last factored Newton matrix (-1: none factored, or with self-contact's
-  // off-band entries): above 0 the solution is a saddle, not a minimum, of the energy Newton
+  // Negative pivots of the last factored Newton matrix, banded or with self-contact's off-band
+  // entries (-1: none factored): above 0 the solution is a saddle, not a minimum, of the energy Newton
   // balances (the static energy, or a dynamic step's incremental potential).
   int negative_pivots = -1;
   std::string failure;        // why, when !converged

@@ -6,7 +6,7 @@
 namespace vascsim {
 
 bool sparse_ldlt_solve(const BandedMatrix& band, const OffBandEntries& extra, const std::vector<char>& fixed,
-                       Eigen::VectorXd& rhs) {
+                       Eigen::VectorXd& rhs, int* negative_pivots) {
   const int n = band.size();
   OffBandEntries entries;
   entries.reserve(static_cast<std::size_t>(n) * BandedMatrix::kWidth + extra.size());
@@ -19,6 +19,8 @@ bool sparse_ldlt_solve(const BandedMatrix& band, const OffBandEntries& extra, co
   a.setFromTriplets(entries.begin(), entries.end());  // duplicates are summed
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt(a);
   if (ldlt.info() != Eigen::Success) return false;
+  // P A P^T = L D L^T: by Sylvester's law of inertia D's signs are A's, whatever the ordering.
+  if (negative_pivots) *negative_pivots = static_cast<int>((ldlt.vectorD().array() < 0.0).count());
   rhs = ldlt.solve(rhs);
   return ldlt.info() == Eigen::Success && rhs.allFinite();
 }

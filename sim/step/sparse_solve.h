@@ -16,8 +16,10 @@ namespace vascsim {
 
 // Solves (band + extra) x = rhs in place (rhs becomes x). Rows and columns of `fixed` degrees of
 // freedom are dropped from `extra` (the band has them fixed already). False if the matrix is
-// singular or not positive definite enough to factorise.
+// singular or not positive definite enough to factorise. `negative_pivots`, if given, gets the
+// number of negative eigenvalues of the matrix (its factorisation's negative pivots), as the
+// banded factorisation reports them: a step's saddle check works with self-contact too.
 bool sparse_ldlt_solve(const BandedMatrix& band, const OffBandEntries& extra, const std::vector<char>& fixed,
-                       Eigen::VectorXd& rhs);
+                       Eigen::VectorXd& rhs, int* negative_pivots = nullptr);
 
 }  // namespace vascsim
