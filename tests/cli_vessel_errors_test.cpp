@@ -39,7 +39,10 @@ const BadVessels kBad[] = {
     {"via_on_the_end", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "via": [[0.2, 0.1], [0.5, 0]])") R"(], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/via/1: expected a point other than node \"j\", where the segment ends, got [0.5, 0]"},
     {"via_turns_back", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "via": [[0.8, 0]])") R"(], "start": "a", "goal": "j"}})",
-     "/vessels/segments/0/via/0: the segment turns back at [0.8, 0] along the line it came by (a 180 degree turn folds the vessel onto itself)"},
+     "/vessels/segments/0/via/0: the segment turns by 180 degrees at [0.8, 0], so sharply that its two legs (radius 0.05 m) overlap all along the shorter one: the vessel folds onto itself"},
+    // Short of 180 degrees but as folded: a rounded reference cut the whole hairpin off.
+    {"via_nearly_reverses", R"({"vessels": {"nodes": {"a": [0, 0], "b": [0.2, 0.001]}, "segments": [{"from": "a", "to": "b", "via": [[0.5, 0]], "radius": 0.05}], "start": "a", "goal": "b"}})",
+     "/vessels/segments/0/via/0: the segment turns by 179.8"},
     {"via_not_a_point", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "via": [[0.2, 0.1], "x"])") R"(], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/via/1: expected a point [x, y] (m), got \"x\""},
     {"route_not_a_name", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j", "route": ["a", ["j"]]}})",
@@ -60,7 +63,10 @@ const BadVessels kBad[] = {
     {"route_gap", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(, {"from": "j", "to": "b", "radius": 0.04}], "start": "a", "goal": "b", "route": ["a", "b"]}})",
      "/vessels/route/1: no segment joins \"a\" and \"b\""},
     {"route_turns_back", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(, {"from": "j", "to": "b", "radius": 0.04}, {"from": "j", "to": "c", "radius": 0.04}], "start": "a", "goal": "c", "route": ["a", "j", "b", "j", "c"]}})",
-     "/vessels/route/3: the route turns back from \"b\" to \"j\" along the segment it came by: a catheter cannot turn round in a vessel"},
+     "/vessels/route/3: the route turns by 180 degrees at \"b\" to go on to \"j\", back along the segment it came by: a catheter cannot turn round in a vessel"},
+    // Overlapping segments: the shortest route from A to C runs past C to B and back.
+    {"shortest_route_folds", R"({"vessels": {"nodes": {"A": [0.1, 0.5], "B": [0.7, 0.5], "C": [0.4, 0.5]}, "segments": [{"from": "A", "to": "B", "radius": 0.03}, {"from": "B", "to": "C", "radius": 0.03}], "start": "A", "goal": "C"}})",
+     "/vessels/goal: the shortest route from the start turns by 180 degrees at \"B\", back along the way it came"},
     {"stenosis_outside", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.45, "length": 0.2}])") R"(], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/stenoses/0: the narrowing (at 0.45 m, length 0.2 m) must lie within the segment (0 to 0.5 m)"},
     {"neck_too_wide", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "aneurysms": [{"at": 0.2, "radius": 0.05, "neck": 0.12}])") R"(], "start": "a", "goal": "j"}})",
@@ -175,6 +181,23 @@ TEST_P(VesselMaskErrors, NameSceneFilePointerAndImageAndExitTwo) {
 
 INSTANTIATE_TEST_SUITE_P(Documented, VesselMaskErrors, ::testing::ValuesIn(kBadMasks),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// What the fold checks must let through: a sharp turn whose legs part well within them, and a
+// loop out by one segment and back by another between the same two nodes.
+TEST(VesselsCommand, SharpTurnsAndLoopsThatDoNotFoldAreAccepted) {
+  const std::string dir = fresh_temp_dir("vessels_not_folded");
+  const char* scenes[] = {
+      R"({"vessels": {"nodes": {"a": [0.1, 0.3], "b": [0.24, 0.45]}, "segments": [{"from": "a", "to": "b", "via": [[0.5, 0.3]], "radius": 0.02}], "start": "a", "goal": "b"}})",
+      R"({"vessels": {"nodes": {"A": [0.1, 0.5], "B": [0.4, 0.5], "C": [0.8, 0.5], "D": [0.4, 0.9]}, "segments": [{"from": "A", "to": "B", "radius": 0.03},
+          {"from": "B", "to": "C", "radius": 0.03}, {"from": "C", "to": "B", "via": [[0.8, 0.2], [0.4, 0.2]], "radius": 0.03},
+          {"from": "B", "to": "D", "radius": 0.03}], "start": "A", "goal": "D", "route": ["A", "B", "C", "B", "D"]}})"};
+  for (const char* text : scenes) {
+    write_text(dir + "/s.json", text);
+    const CommandResult r = run_vascsim("vessels --scene " + dir + "/s.json --out " + dir + "/n.json --force");
+    EXPECT_EQ(r.exit_code, 0) << text << "\n" << r.output;
+  }
+  std::filesystem::remove_all(dir);
+}
 
 TEST(VesselsCommand, WritesTheNetworkAndRefusesAMaze) {
   const std::string dir = fresh_temp_dir("vessels_command");

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -107,6 +108,28 @@ TEST(UnusedFields, RunWarnsNamingTheFileAndRecordsThemInTheSummary) {
   ASSERT_EQ(summary["unused_fields"].size(), 2u) << summary["unused_fields"].dump();
   EXPECT_EQ(summary["unused_fields"][0]["pointer"], "/solver/load_steps");
   EXPECT_EQ(summary["unused_fields"][1]["pointer"], "/contact/friction");
+}
+
+// A field reported unused must change nothing: paper contact in free space (no walls) changed the
+// Newton predictor, and the frames drifted apart at round-off (a QA pass found it).
+TEST(UnusedFields, AReportedFieldChangesNoFrame) {
+  const std::string dir = test::fresh_temp_dir("unused_fields_frames");
+  const std::string base = R"({"maze": null, "rod": {"nodes": 12}, "boundary": {"clamp": "first_edge"},
+    "loads": {"gravity": {"enabled": true}}, "run": {"duration": 0.3})";
+  test::write_text(dir + "/plain.json", base + "}");
+  test::write_text(dir + "/paper.json", base + R"(, "contact": {"mode": "paper", "paper_gain": 9}})");
+  for (const char* name : {"plain", "paper"}) {
+    const test::CommandResult r = test::run_vascsim(std::string("run ") + dir + "/" + name + ".json --out " + dir + "/" + name + " --quiet");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  FrameLogReader plain(dir + "/plain/frames.vlog"), paper(dir + "/paper/frames.vlog");
+  ASSERT_EQ(plain.frame_count(), paper.frame_count());
+  std::vector<double> a, b;
+  for (std::size_t i = 0; i < plain.frame_count(); ++i) {
+    plain.read(i, a);
+    paper.read(i, b);
+    ASSERT_EQ(a, b) << "frame " << i;
+  }
 }
 
 // The kinematic tip's motion is imposed, so a force disturbance on it moved nothing; it was

@@ -31,12 +31,20 @@ std::string quoted(const std::string& name) { return "\"" + name + "\""; }
 
 std::string segment_pointer(std::size_t i) { return "/vessels/segments/" + std::to_string(i); }
 
-// A centreline that comes in along `in` and leaves along `out` reversed (anti-parallel to round-
-// off): the tube folds onto itself there and the reference path has no side to round the corner
-// to. Any sharper-than-zero turn short of that is a corner a vessel can have.
-bool turns_back(const Vec2& in, const Vec2& out) {
-  const double scale = in.norm() * out.norm();
-  return in.dot(out) < 0.0 && std::abs(in.x() * out.y() - in.y() * out.x()) <= 1e-9 * scale;
+// A tube of `radius` that comes in along leg `in` and leaves along leg `out` (vectors as long as
+// the legs) turning by more than 90 degrees: its two legs' tubes part 2 radius / sin(angle between
+// the legs) from the corner. If that is beyond the shorter leg, the legs overlap all along it: the
+// vessel folds onto itself (a 180-degree turn is the extreme), and the reference path has no
+// corner it can round (a rounded 179.9-degree turn cut the whole hairpin off).
+bool folds_back(const Vec2& in, const Vec2& out, double radius) {
+  if (in.dot(out) >= 0.0) return false;
+  const double li = in.norm(), lo = out.norm();
+  const double sin_between = std::abs(in.x() * out.y() - in.y() * out.x()) / (li * lo);
+  return 2.0 * radius >= sin_between * std::min(li, lo);
+}
+
+double turn_degrees(const Vec2& in, const Vec2& out) {
+  return std::atan2(std::abs(in.x() * out.y() - in.y() * out.x()), in.dot(out)) * 180.0 / kPi;
 }
 
 // Point and base radius (the linear taper) at arc length s along a polyline with radii.
@@ -78,11 +86,6 @@ Profile profile_of(const VesselSegmentSpec& seg, const Vec2& from, const Vec2& t
     }
     p.s.push_back(p.s.back() + step);
   }
-  for (std::size_t k = 1; k + 1 < p.points.size(); ++k)
-    if (turns_back(p.points[k] - p.points[k - 1], p.points[k + 1] - p.points[k]))
-      fail(segment_pointer(index) + "/via/" + std::to_string(k - 1),
-           "the segment turns back at [" + number(seg.via[k - 1].x()) + ", " + number(seg.via[k - 1].y()) +
-               "] along the line it came by (a 180 degree turn folds the vessel onto itself)");
   const std::string rp = segment_pointer(index) + "/radius";
   if (seg.radius.size() == 2) {
     for (double s : p.s) p.radius.push_back(seg.radius[0] + (seg.radius[1] - seg.radius[0]) * s / p.s.back());
@@ -97,7 +100,28 @@ Profile profile_of(const VesselSegmentSpec& seg, const Vec2& from, const Vec2& t
   }
   for (std::size_t k = 0; k < seg.radius.size(); ++k)
     if (!(seg.radius[k] > 0.0) || !std::isfinite(seg.radius[k])) fail(rp + "/" + std::to_string(k), "a radius > 0 (m)", number(seg.radius[k]));
+  for (std::size_t k = 1; k + 1 < p.points.size(); ++k) {
+    const Vec2 in = p.points[k] - p.points[k - 1], out = p.points[k + 1] - p.points[k];
+    if (folds_back(in, out, p.radius[k]))
+      fail(segment_pointer(index) + "/via/" + std::to_string(k - 1),
+           "the segment turns by " + number(turn_degrees(in, out)) + " degrees at [" + number(seg.via[k - 1].x()) + ", " +
+               number(seg.via[k - 1].y()) + "], so sharply that its two legs (radius " + number(p.radius[k]) +
+               " m) overlap all along the shorter one: the vessel folds onto itself");
+  }
   return p;
+}
+
+// Whether the route folds back at the node between steps `came` and `goes` (docs: folds_back,
+// with the segments' whole lengths as the legs and their ends' directions).
+bool route_folds_back(const VesselGraph& g, const RouteStep& came, const RouteStep& goes, Vec2& in, Vec2& out) {
+  const ResolvedSegment& a = g.segments[static_cast<std::size_t>(came.segment)];
+  const ResolvedSegment& b = g.segments[static_cast<std::size_t>(goes.segment)];
+  const auto& s = a.samples;
+  const auto& t = b.samples;
+  in = (came.forward ? s.back().point - s[s.size() - 2].point : s.front().point - s[1].point).normalized() * a.length;
+  out = (goes.forward ? t[1].point - t.front().point : t[t.size() - 2].point - t.back().point).normalized() * b.length;
+  const double radius = std::max(came.forward ? s.back().radius : s.front().radius, goes.forward ? t.front().radius : t.back().radius);
+  return folds_back(in, out, radius);
 }
 
 }  // namespace
@@ -206,34 +230,32 @@ std::vector<RouteStep> vessel_route(const VesselGraph& g, const VesselsSpec& spe
     if (nodes.back() != g.goal)
       fail("/vessels/route/" + std::to_string(nodes.size() - 1), "the goal node " + quoted(spec.goal), quoted(spec.route.back()));
     for (std::size_t i = 1; i < nodes.size(); ++i) {
-      RouteStep best;
-      double shortest = std::numeric_limits<double>::infinity();
+      // The shortest segment joining the two nodes that does not fold back on the way in (two
+      // segments may join them: a loop goes out by one and back by the other).
+      std::vector<std::pair<double, RouteStep>> joining;
       for (std::size_t k = 0; k < g.segments.size(); ++k) {
         const auto& s = g.segments[k];
         const bool fwd = s.from == nodes[i - 1] && s.to == nodes[i], back = s.to == nodes[i - 1] && s.from == nodes[i];
-        if ((fwd || back) && s.length < shortest) {
-          shortest = s.length;
-          best = {static_cast<int>(k), fwd};
-        }
+        if (fwd || back) joining.push_back({s.length, {static_cast<int>(k), fwd}});
       }
-      if (best.segment < 0)
+      if (joining.empty())
         fail("/vessels/route/" + std::to_string(i),
              "no segment joins \"" + spec.route[i - 1] + "\" and \"" + spec.route[i] + "\"");
-      // Travel directions just before and just after node i - 1 of the route.
-      if (!route.empty()) {
-        const auto& came = g.segments[static_cast<std::size_t>(route.back().segment)].samples;
-        const auto& goes = g.segments[static_cast<std::size_t>(best.segment)].samples;
-        const Vec2 in = route.back().forward ? came.back().point - came[came.size() - 2].point
-                                             : came.front().point - came[1].point;
-        const Vec2 out = best.forward ? goes[1].point - goes.front().point
-                                      : goes[goes.size() - 2].point - goes.back().point;
-        if (turns_back(in, out))
-          fail("/vessels/route/" + std::to_string(i),
-               "the route turns back from " + quoted(spec.route[i - 1]) + " to " + quoted(spec.route[i]) + " along " +
-                   (best.segment == route.back().segment ? "the segment" : "a segment overlapping the one") +
-                   " it came by: a catheter cannot turn round in a vessel");
-      }
-      route.push_back(best);
+      std::stable_sort(joining.begin(), joining.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      const RouteStep* chosen = nullptr;
+      Vec2 in, out;
+      for (const auto& [length, step] : joining)
+        if (route.empty() || !route_folds_back(g, route.back(), step, in, out)) {
+          chosen = &step;
+          break;
+        }
+      if (!chosen)
+        fail("/vessels/route/" + std::to_string(i),
+             "the route turns by " + number(turn_degrees(in, out)) + " degrees at " + quoted(spec.route[i - 1]) + " to go on to " +
+                 quoted(spec.route[i]) + ", back along " +
+                 (joining.front().second.segment == route.back().segment ? "the segment" : "a segment overlapping the one") +
+                 " it came by: a catheter cannot turn round in a vessel");
+      route.push_back(*chosen);
     }
     return route;
   }
@@ -279,6 +301,18 @@ std::vector<RouteStep> vessel_route(const VesselGraph& g, const VesselsSpec& spe
     v = step.forward ? s.from : s.to;
   }
   std::reverse(route.begin(), route.end());
+  // Segments that overlap can make even the shortest route fold back (A to B past C, then back to C).
+  for (std::size_t i = 1; i < route.size(); ++i) {
+    Vec2 in, out;
+    if (route_folds_back(g, route[i - 1], route[i], in, out)) {
+      const auto& s = g.segments[static_cast<std::size_t>(route[i - 1].segment)];
+      const int node = route[i - 1].forward ? s.to : s.from;
+      fail("/vessels/goal", "the shortest route from the start turns by " + number(turn_degrees(in, out)) + " degrees at " +
+                                quoted(g.names[static_cast<std::size_t>(node)]) +
+                                ", back along the way it came (overlapping segments?): a catheter cannot turn round in a "
+                                "vessel; name a route (/vessels/route) that does not");
+    }
+  }
   return route;
 }
 

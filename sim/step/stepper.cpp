@@ -84,7 +84,8 @@ bool attempt(const Model& model, State& state, Workspace& ws, const Controls& co
   // Newton reached other solutions often enough that 2 of the 21 mazes of
   // tests/navigation_test.cpp lost their goal. Constant velocity there, as before.
   ws.dx = h * state.v;
-  if (state.h_prev > 0.0 && model.scene.contact.mode != ContactMode::kPaper)
+  const bool paper_walls = model.scene.contact.mode == ContactMode::kPaper && model.scene.has_environment;
+  if (state.h_prev > 0.0 && !paper_walls)
     ws.dx += (0.5 * h * h / state.h_prev) * (state.v - state.v_prev);
   for (std::size_t d = 0; d < ws.fixed.size(); ++d)
     if (ws.fixed[d]) ws.dx[static_cast<Eigen::Index>(d)] = ws.target[static_cast<Eigen::Index>(d)] - state.x[static_cast<Eigen::Index>(d)];
