@@ -83,7 +83,10 @@ const BadVessels kBad[] = {
     // A vessel behind the inlet: the rod's straight way in crossed it, and the union joined it
     // to the inlet.
     {"way_in_across_a_vessel", R"({"vessels": {"nodes": {"a": [0.5, 0.5], "b": [1, 0.5], "c": [0.3, 0.2], "d": [0.3, 0.8]}, "segments": [{"from": "a", "to": "b", "radius": 0.05}, {"from": "c", "to": "d", "radius": 0.05}], "start": "a", "goal": "b"}})",
-     "/vessels/start: the rod's way in (straight back from the start along the inlet for the rod's length, 0.5 m) crosses the lumen at (0.35, 0.5) m"},
+     "/vessels/start: the rod's way in (straight back from the start along the inlet for the rod's length and two inlet radii, 0.6 m) comes within the introducer's radius of another vessel, which its lumen would join to the inlet, at (0.35, 0.5) m, 0.15 m behind the start"},
+    // Beside the way in without crossing it: the union joined them all the same.
+    {"way_in_beside_a_vessel", R"({"vessels": {"nodes": {"S": [0.5, 0.5], "E": [0.9, 0.5], "P": [0, 0.55], "Q": [0.4, 0.55]}, "segments": [{"from": "S", "to": "E", "radius": 0.03}, {"from": "P", "to": "Q", "radius": 0.03}], "start": "S", "goal": "E"}})",
+     "/vessels/start: the rod's way in (straight back from the start along the inlet for the rod's length and two inlet radii, 0.56 m) comes within the introducer's radius of another vessel"},
     {"maze_and_vessels", R"({"maze": {}, "vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j"}})",
      "/maze: expected no \"maze\" beside \"vessels\" (a scene has one environment), got an object"},
     // Found by the scene fuzz harness: a far point overflowed the lumen's integer geometry
@@ -104,6 +107,8 @@ const BadVessels kBadMasks[] = {
     {"mask_not_png", MASK("text.png", "[0.1, 0.1]", "[0.2, 0.2]"), "/vessels/mask/file: "},
     {"mask_too_large", MASK("huge.png", "[0.1, 0.1]", "[0.2, 0.2]"), "/vessels/mask/file: "},
     {"mask_black", MASK("black.png", "[0.1, 0.1]", "[0.2, 0.2]"), "/vessels/mask: "},
+    {"mask_way_in_enters_another_vessel", MASK("tube_bar.png", "[1.1, 0.3]", "[0.3, 0.3]"),
+     "/vessels/start: the rod's way in (straight back from the start along the inlet for the rod's length and two inlet radii, 0.600454 m) enters another vessel at (1.35"},
     {"mask_start_outside", MASK("two_discs.png", "[0.01, 0.01]", "[0.3, 0.3]"), "/vessels/start: "},
     {"mask_goal_outside", MASK("two_discs.png", "[0.3, 0.3]", "[0.01, 0.01]"), "/vessels/goal: "},
     {"mask_not_connected", MASK("two_discs.png", "[0.3, 0.3]", "[1.3, 0.3]"), "/vessels/goal: "},
@@ -154,6 +159,12 @@ void write_mask_images(const std::string& dir) {
       if (std::hypot(x - 30, y - 30) < 20 || std::hypot(x - 130, y - 30) < 20) discs[static_cast<std::size_t>(row * 160 + col)] = 255;
     }
   std::ofstream(dir + "/two_discs.png", std::ios::binary) << png_bytes(160, 60, 0, discs);
+  // A tube from x = 0.2 m to x = 1.2 m (radius 0.05 m), and a bar across the way in at x = 1.35 m.
+  std::vector<std::uint8_t> tube_bar(160 * 60, 0);
+  for (int row = 0; row < 60; ++row)
+    for (int col = 0; col < 160; ++col)
+      if ((row >= 25 && row < 35 && col >= 20 && col < 120) || (col >= 135 && col < 140)) tube_bar[static_cast<std::size_t>(row * 160 + col)] = 255;
+  std::ofstream(dir + "/tube_bar.png", std::ios::binary) << png_bytes(160, 60, 0, tube_bar);
   std::ofstream(dir + "/huge.png", std::ios::binary) << png_bytes(1, 8193, 0, std::vector<std::uint8_t>(8193, 255));
   write_text(dir + "/text.png", "not an image\n");
 }
@@ -196,6 +207,20 @@ TEST(VesselsCommand, SharpTurnsAndLoopsThatDoNotFoldAreAccepted) {
     const CommandResult r = run_vascsim("vessels --scene " + dir + "/s.json --out " + dir + "/n.json --force");
     EXPECT_EQ(r.exit_code, 0) << text << "\n" << r.output;
   }
+  std::filesystem::remove_all(dir);
+}
+
+// A mask's start in the middle of a vessel that runs on behind it to the image's edge: the way
+// in stays in its own vessel and leaves through the edge (a first version refused it there).
+TEST(VesselsCommand, AMaskStartWhoseVesselRunsOnBehindItIsAccepted) {
+  const std::string dir = fresh_temp_dir("vessels_mask_way_in");
+  std::vector<std::uint8_t> tube(160 * 60, 0);
+  for (int row = 25; row < 35; ++row)
+    for (int col = 20; col < 160; ++col) tube[static_cast<std::size_t>(row * 160 + col)] = 255;
+  std::ofstream(dir + "/tube.png", std::ios::binary) << png_bytes(160, 60, 0, tube);
+  write_text(dir + "/s.json", R"({"vessels": {"mask": {"file": "tube.png", "pixel_size": 0.01}, "start": [1.0, 0.3], "goal": [0.3, 0.3]}})");
+  const CommandResult r = run_vascsim("vessels --scene " + dir + "/s.json --out " + dir + "/n.json");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
   std::filesystem::remove_all(dir);
 }
 

@@ -58,45 +58,99 @@ Polyline introducer(const Inlet& inlet, double radius, double rod_length, double
   return tapered_tube_ring(back, radius, inlet.tip, radius, chord_error);
 }
 
-// Where segments p0-p1 and q0-q1 cross (proper or touching), if they do.
-bool segments_cross(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1, Vec2& at) {
-  const Vec2 d = p1 - p0, e = q1 - q0, w = q0 - p0;
-  const double denom = d.x() * e.y() - d.y() * e.x();
-  if (denom == 0.0) return false;  // parallel: a wall along the axis is not a vessel across it
-  const double t = (w.x() * e.y() - w.y() * e.x()) / denom, u = (w.x() * d.y() - w.y() * d.x()) / denom;
-  if (t < 0.0 || t > 1.0 || u < 0.0 || u > 1.0) return false;
-  at = p0 + t * d;
-  return true;
+// The rod's way in: the introducer's axis, from the start straight back along the inlet for the
+// rod's length and two inlet radii. The introducer must leave the network through nothing but its
+// own vessel: joined to another one, the union would give the rod a way round the route and start
+// it drawn through that vessel's walls.
+struct WayIn {
+  Vec2 tip, far;
+  double length = 0.0;  // m
+  Vec2 at(double s) const { return tip + (s / length) * (far - tip); }
+};
+
+WayIn way_in(const Inlet& inlet, double radius, double rod_length) {
+  const double length = rod_length + 2.0 * radius;
+  return {inlet.tip, inlet.tip - length * inlet.inward, length};
 }
 
-// The introducer must leave the network through nothing but the inlet: across another vessel,
-// the union would join that vessel to the inlet (a way round the route) and the rod would start
-// drawn through its walls. Its axis is checked from its far end to three inlet radii behind the
-// start, clear of the inlet vessel's own round end.
-void refuse_an_introducer_across_the_lumen(const Inlet& inlet, double radius, double rod_length,
-                                           const std::vector<Polyline>& pieces) {
-  const Vec2 far = inlet.tip - (rod_length + 2.0 * radius) * inlet.inward;
-  const Vec2 near = inlet.tip - 3.0 * radius * inlet.inward;
-  if ((near - inlet.tip).dot(far - near) <= 0.0) return;  // a rod shorter than that: nothing to check
-  for (const Polyline& ring : pieces)
+[[noreturn]] void refuse_way_in(const WayIn& w, double s, const char* what, const std::string& image = "") {
+  const Vec2 p = w.at(s);
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "the rod's way in (straight back from the start along the inlet for the rod's length and two "
+                "inlet radii, %g m) %s at (%g, %g) m, %g m behind the start: choose a start whose vessel runs "
+                "straight out of the network for that length, or a shorter rod",
+                w.length, what, p.x(), p.y(), s);
+  throw InputError(std::string("/vessels/start: ") + text + (image.empty() ? "" : " (" + image + ")"));
+}
+
+// Parameter t in [0, 1] along p0-p1 where it crosses q0-q1, or -1.
+double crossing(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1) {
+  const Vec2 d = p1 - p0, e = q1 - q0, w = q0 - p0;
+  const double denom = d.x() * e.y() - d.y() * e.x();
+  if (denom == 0.0) return -1.0;
+  const double t = (w.x() * e.y() - w.y() * e.x()) / denom, u = (w.x() * d.y() - w.y() * d.x()) / denom;
+  return t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0 ? t : -1.0;
+}
+
+// A graph: the pieces of every other segment, and sacs off the inlet segment, must keep clear of
+// the introducer (its radius, plus the gap the lumen's rounding closes). Returns the distance
+// along the way in of the nearest piece that does not, or -1.
+double way_in_meets(const WayIn& w, double radius, double rounding, const std::vector<Polyline>& others) {
+  const double reach = radius + 2.0 * rounding;
+  double nearest = -1.0;
+  const auto note = [&](double s) { nearest = nearest < 0.0 ? s : std::min(nearest, s); };
+  for (const Polyline& ring : others) {
+    if (inside_lumen({ring}, w.tip) || inside_lumen({ring}, w.far)) note(inside_lumen({ring}, w.tip) ? 0.0 : w.length);
     for (std::size_t k = 0; k < ring.size(); ++k) {
-      Vec2 at;
-      if (!segments_cross(far, near, ring[k], ring[(k + 1) % ring.size()], at)) continue;
-      char text[400];
-      std::snprintf(text, sizeof text,
-                    "the rod's way in (straight back from the start along the inlet for the rod's length, %g m) "
-                    "crosses the lumen at (%g, %g) m: choose a start whose vessel runs straight out of the "
-                    "network for that length, or a shorter rod",
-                    rod_length, at.x(), at.y());
-      throw InputError(std::string("/vessels/start: ") + text);
+      const Vec2 &q0 = ring[k], &q1 = ring[(k + 1) % ring.size()];
+      if (const double t = crossing(w.tip, w.far, q0, q1); t >= 0.0) {
+        note(t * w.length);
+        continue;
+      }
+      // Not crossing: the nearest approach is at an end of one of the two segments.
+      const auto to_segment = [](const Vec2& p, const Vec2& a, const Vec2& b, double& t) {
+        const Vec2 ab = b - a;
+        t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+        return (p - (a + t * ab)).norm();
+      };
+      double t = 0.0;
+      if (to_segment(q0, w.tip, w.far, t) < reach) note(t * w.length);
+      if (to_segment(q1, w.tip, w.far, t) < reach) note(t * w.length);
+      double u = 0.0;
+      if (to_segment(w.tip, q0, q1, u) < reach) note(0.0);
+      if (to_segment(w.far, q0, q1, u) < reach) note(w.length);
     }
+  }
+  return nearest;
+}
+
+// A mask: its own vessel may run on behind the start (to the image's edge, where the trace
+// closes it); once the way in has left the lumen it must not enter it again.
+double way_in_reenters(const WayIn& w, const std::vector<Polyline>& rings) {
+  std::vector<double> cuts;
+  for (const Polyline& ring : rings)
+    for (std::size_t k = 0; k < ring.size(); ++k)
+      if (const double t = crossing(w.tip, w.far, ring[k], ring[(k + 1) % ring.size()]); t >= 0.0) cuts.push_back(t);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.push_back(1.0);
+  bool left = false;
+  double from = 0.0;
+  for (const double to : cuts) {
+    if (to > from) {
+      const bool inside = inside_lumen(rings, w.at(0.5 * (from + to) * w.length));
+      if (!inside) left = true;
+      else if (left) return from * w.length;
+    }
+    from = to;
+  }
+  return -1.0;
 }
 
 // What graph and mask share once their lumen pieces and centreline are known.
 void finish(Environment& env, std::vector<Polyline> pieces, double rounding, double chord_error, double rod_length) {
   const Polyline& c = env.centreline;
   const std::vector<double>& r = env.centreline_radius;
-  refuse_an_introducer_across_the_lumen(env.inlet, r.front(), rod_length, pieces);
   pieces.push_back(introducer(env.inlet, r.front(), rod_length, chord_error));
   env.lumen = lumen_union(pieces, rounding, chord_error);
   env.walls = walls_along(env.lumen);
@@ -113,18 +167,27 @@ void finish(Environment& env, std::vector<Polyline> pieces, double rounding, dou
 
 Environment graph_environment(const VesselsSpec& spec, double rod_length) {
   const VesselGraph graph = resolve_vessel_graph(spec);
-  const std::vector<VesselSample> route = route_samples(graph, vessel_route(graph, spec));
   double smallest = INFINITY;
   for (const auto& s : graph.segments)
     for (const auto& v : s.samples) smallest = std::min(smallest, v.radius);
   const double chord_error = std::max(kRelativeChordError * smallest, kMinChordError);
 
-  std::vector<Polyline> pieces;
-  for (const auto& s : graph.segments)
-    for (std::size_t k = 1; k < s.samples.size(); ++k)
+  const std::vector<RouteStep> steps = vessel_route(graph, spec);
+  const std::vector<VesselSample> route = route_samples(graph, steps);
+  const int inlet_segment = steps.front().segment;
+  std::vector<Polyline> pieces, others;  // others: off the inlet's own segment
+  for (std::size_t i = 0; i < graph.segments.size(); ++i) {
+    const auto& s = graph.segments[i];
+    for (std::size_t k = 1; k < s.samples.size(); ++k) {
       pieces.push_back(tapered_tube_ring(s.samples[k - 1].point, s.samples[k - 1].radius, s.samples[k].point,
                                          s.samples[k].radius, chord_error));
-  for (const auto& sac : graph.sacs) pieces.push_back(disc_ring(sac.centre, sac.radius, chord_error));
+      if (static_cast<int>(i) != inlet_segment) others.push_back(pieces.back());
+    }
+  }
+  for (const auto& sac : graph.sacs) {
+    pieces.push_back(disc_ring(sac.centre, sac.radius, chord_error));
+    if (sac.segment != inlet_segment) others.push_back(pieces.back());
+  }
 
   Environment env;
   for (const auto& v : route) {
@@ -133,7 +196,11 @@ Environment graph_environment(const VesselsSpec& spec, double rod_length) {
   }
   env.inlet.tip = env.centreline.front();
   env.inlet.inward = (env.centreline[1] - env.centreline[0]).normalized();
-  finish(env, std::move(pieces), kRelativeRounding * smallest, chord_error, rod_length);
+  const double rounding = kRelativeRounding * smallest;
+  const WayIn w = way_in(env.inlet, env.centreline_radius.front(), rod_length);
+  if (const double s = way_in_meets(w, env.centreline_radius.front(), rounding, others); s >= 0.0)
+    refuse_way_in(w, s, "comes within the introducer's radius of another vessel, which its lumen would join to the inlet,");
+  finish(env, std::move(pieces), rounding, chord_error, rod_length);
   return env;
 }
 
@@ -151,6 +218,8 @@ Environment mask_environment(const VesselMaskSpec& mask, double rod_length) {
   std::size_t k = 1;
   while (k + 1 < env.centreline.size() && (env.centreline[k] - env.centreline[0]).norm() < reach) ++k;
   env.inlet.inward = (env.centreline[k] - env.centreline[0]).normalized();
+  const WayIn w = way_in(env.inlet, env.centreline_radius.front(), rod_length);
+  if (const double s = way_in_reenters(w, trace.outline); s >= 0.0) refuse_way_in(w, s, "enters another vessel", mask.file);
   finish(env, trace.outline, 0.0, 0.1 * mask.pixel_size, rod_length);
   return env;
 }
