@@ -60,6 +60,11 @@ class FrameSource {
   double time_of(std::size_t i) const { return reader_.time_of(i); }
   // Logged frame i's raw record: time, then every channel's values (docs/frame-log.md).
   void record(std::size_t i, std::vector<double>& out) const { reader_.read(i, out); }
+  // Records [first, first + count) back to back, in one read, from the file this source opened
+  // (never the path again: a log replaced since would give another run's records).
+  void records(std::size_t first, std::size_t count, std::vector<double>& out) const {
+    reader_.read_frames(first, count, out);
+  }
   // Checks that frames [0, end) have finite, non-negative, non-decreasing times (each frame is
   // read once over the source's life); throws InputError naming the first bad frame.
   void check_times(std::size_t end) const;

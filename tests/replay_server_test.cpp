@@ -279,6 +279,13 @@ TEST(ReplayServer, LiveFollowSeesFramesAppendedAfterStart) {
   const std::string png = dir / "live.png";
   ASSERT_EQ(vascsim::test::run_vascsim("render " + run + " --still 1.1 --width 64 --height 64 --png " + png).exit_code, 0);
   EXPECT_TRUE(live->body == vascsim::test::read_text(png)) << "a live frame differs from the still of the final log";
+  // A frame appended after the summary is not the run's: the served run keeps to its 12.
+  {
+    std::ofstream f(run + "/frames.vlog", std::ios::binary | std::ios::app);
+    const double extra[7] = {1.2, 0.0, 0.0, 0.012, 0.0, 0.024, 0.001};
+    f.write(reinterpret_cast<const char*>(extra), sizeof extra);
+  }
+  EXPECT_EQ(get_json(s, "/api/run")["frames"], 12);
 }
 
 // A run that failed replays up to its last frame, with the failure marked on the timeline.
@@ -433,6 +440,38 @@ TEST(ReplayServer, ExportWritesANewMp4EachTime) {
   }
   EXPECT_EQ(files[0], "export-001.mp4");
   EXPECT_EQ(files[1], "export-002.mp4");
+  // A finished export deleted, or a link put in its place, is not served: 404, not a 500 or the
+  // link's target.
+  fs::remove(run + "/export-001.mp4");
+  EXPECT_EQ(s.get("/api/export/file?id=1")->status, 404);
+  fs::remove(run + "/export-002.mp4");
+  fs::create_symlink(run + "/frames.vlog", run + "/export-002.mp4");
+  EXPECT_EQ(s.get("/api/export/file?id=2")->status, 404);
+}
+
+// An export of run a with run b drawn over it (overlay=b, as the page's compare view sends it):
+// it was refused with the command line's "--overlay draws over a still or a video" message,
+// checked before the job had chosen its MP4.
+TEST(ReplayServer, AnExportWithTheOverlayIsAVideoOfBoth) {
+  ScratchDir dir("replay_export_overlay");
+  const std::string a = synthetic_run(dir, "a", long_spec());
+  render::SyntheticLogSpec other = long_spec();
+  other.speed = 0.002;
+  const std::string b = synthetic_run(dir, "b", other);
+  LiveServer s({{a, b}});
+  const auto r = s.client().Post(s.authorised("/api/export?from=1&to=2&width=160&height=120&fps=10&overlay=b").c_str(), "",
+                                 "text/plain");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const int id = json::parse(r->body)["id"];
+  json status;
+  for (int wait = 0; wait < 600; ++wait) {
+    status = get_json(s, "/api/export/status?id=" + std::to_string(id));
+    if (status["state"] != "running") break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_EQ(status["state"], "done") << status.dump();
+  EXPECT_EQ(render::probe_video(a + "/" + status["file"].get<std::string>()).frames, 11);
 }
 
 // A third export while two run is refused with 429 and says why (docs/replay.md); the server

@@ -48,8 +48,10 @@ ReplayRun::ReplayRun(std::string id, const std::string& run_path, int generation
 }
 
 void ReplayRun::refresh() {
-  source_->refresh();
+  // A finished run's frames are those its summary counts: frames appended after it are not the
+  // run's (a reader refuses such a log on opening; one served already keeps to the summary's).
   if (!summary_.is_null()) return;
+  source_->refresh();
   // A summary belongs to the run directory's own log only.
   const bool own_log = !log_is_file_ || fs::path(source_->log_path()).filename() == "frames.vlog";
   if (!own_log) {
@@ -140,11 +142,10 @@ void ReplayRun::scan(std::size_t first, Visit visit) const {
   const FrameLogHeader& h = source_->header();
   const std::size_t per_record = h.record_doubles();
   const std::size_t chunk = std::max<std::size_t>(1, (4u << 20) / (per_record * sizeof(double)));  // ~4 MB reads
-  FrameLogReader reader(source_->log_path());
   std::vector<double> buffer;
   for (std::size_t i = first; i < source_->frame_count(); i += chunk) {
     const std::size_t n = std::min(chunk, source_->frame_count() - i);
-    reader.read_frames(i, n, buffer);
+    source_->records(i, n, buffer);
     for (std::size_t k = 0; k < n; ++k) visit(i + k, &buffer[k * per_record]);
   }
 }

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
@@ -359,7 +360,10 @@ struct ReplayServer::Impl {
         throw ParamError("to", "more than 200000 video frames; choose a shorter range or a higher speed");
     }
     try {
-      render::validate_render_options(o);
+      // Checked as the export will run: into an MP4, whose name the job chooses.
+      render::RenderOptions as_run = o;
+      as_run.mp4_path = out_dir + "/export.mp4";
+      render::validate_render_options(as_run);
     } catch (const InputError& e) {
       throw ParamError("from", e.what());
     }
@@ -377,6 +381,12 @@ struct ReplayServer::Impl {
     const RequestParams p(req.params);
     const auto path = exports.file(export_id(p));
     if (!path) throw ParamError("id", "no finished export with this id");
+    // The file the export wrote, as it wrote it: not one deleted since, nor a link put in its place.
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(*path, ec))) {
+      send_error(res, 404, *path + ": the exported video is no longer there (deleted or replaced since)");
+      return;
+    }
     auto in = std::make_shared<std::ifstream>(*path, std::ios::binary);
     if (!*in) throw InputError(*path + ": cannot read the exported video");
     in->seekg(0, std::ios::end);
