@@ -148,6 +148,10 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
   ScratchDir dir("replay_400");
   LiveServer s({{synthetic_run(dir, "run")}});
   const std::pair<std::string, std::string> cases[] = {
+      // A misspelt or foreign parameter was ignored, and its default used (T=1 drew t = 0).
+      {"/api/frame.png?T=1", "T"},
+      {"/api/nodes?t=1&zoom=2", "zoom"},
+      {"/api/run?id=3", "id"},
       {"/api/frame.png?t=nan", "t"},
       {"/api/frame.png?t=inf", "t"},
       {"/api/frame.png?t=1e400", "t"},

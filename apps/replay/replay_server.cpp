@@ -316,6 +316,8 @@ struct ReplayServer::Impl {
     send_json(res, body);
   }
 
+  void get_bookmarks(const httplib::Request& req, httplib::Response& res) { bookmarks(req, res, false); }
+  void post_bookmark(const httplib::Request& req, httplib::Response& res) { bookmarks(req, res, true); }
   void bookmarks(const httplib::Request& req, httplib::Response& res, bool add) {
     const RequestParams p(req.params);
     std::lock_guard<std::mutex> lock(data_mutex);
@@ -423,8 +425,23 @@ struct ReplayServer::Impl {
   }
 
   using Handler = void (Impl::*)(const httplib::Request&, httplib::Response&);
-  httplib::Server::Handler wrap(Handler handler) {
-    return [this, handler](const httplib::Request& req, httplib::Response& res) { guarded(req, res, [&] { (this->*handler)(req, res); }); };
+  // `takes`: the endpoint's parameters (besides token). Any other is refused before the handler
+  // runs: a misspelt one (T=1 for t=1) would otherwise be ignored and its default used.
+  httplib::Server::Handler wrap(Handler handler, std::vector<std::string> takes) {
+    return [this, handler, takes](const httplib::Request& req, httplib::Response& res) {
+      guarded(req, res, [&] {
+        refuse_unknown_parameters(req, takes);
+        (this->*handler)(req, res);
+      });
+    };
+  }
+  static void refuse_unknown_parameters(const httplib::Request& req, const std::vector<std::string>& takes) {
+    for (const auto& [name, value] : req.params) {
+      if (name == "token" || std::find(takes.begin(), takes.end(), name) != takes.end()) continue;
+      std::string list;
+      for (const auto& t : takes) list += (list.empty() ? "" : ", ") + t;
+      throw ParamError(name.substr(0, 64), "not a parameter of " + req.path + (list.empty() ? " (it takes none)" : " (it takes " + list + ")"));
+    }
   }
   template <class Body>
   void guarded(const httplib::Request&, httplib::Response& res, Body body) {
@@ -479,21 +496,22 @@ struct ReplayServer::Impl {
       const std::string name = a.name;
       get("/" + name, [this, name](const httplib::Request& req, httplib::Response& res) { asset(name, req, res); });
     }
-    get("/api/run", wrap(&Impl::run_info));
-    get("/api/frame.png", wrap(&Impl::frame));
-    get("/api/nodes", wrap(&Impl::nodes));
-    get("/api/series", wrap(&Impl::series));
-    get("/api/events", wrap(&Impl::events));
-    get("/api/compare", wrap(&Impl::compare));
-    get("/api/bookmarks", [this](const httplib::Request& req, httplib::Response& res) {
-      guarded(req, res, [&] { bookmarks(req, res, false); });
-    });
-    post("/api/bookmarks", [this](const httplib::Request& req, httplib::Response& res) {
-      guarded(req, res, [&] { bookmarks(req, res, true); });
-    });
-    post("/api/export", wrap(&Impl::start_export));
-    get("/api/export/status", wrap(&Impl::export_status));
-    get("/api/export/file", wrap(&Impl::export_file));
+    const std::vector<std::string> view = {"run", "width", "height", "camera", "zoom", "center", "layers", "overlay"};
+    const auto with = [](std::vector<std::string> a, const std::vector<std::string>& b) {
+      a.insert(a.end(), b.begin(), b.end());
+      return a;
+    };
+    get("/api/run", wrap(&Impl::run_info, {"run"}));
+    get("/api/frame.png", wrap(&Impl::frame, with(view, {"t"})));
+    get("/api/nodes", wrap(&Impl::nodes, {"run", "t"}));
+    get("/api/series", wrap(&Impl::series, {"run", "channel", "reduce", "from", "to", "points"}));
+    get("/api/events", wrap(&Impl::events, {"run"}));
+    get("/api/compare", wrap(&Impl::compare, {"t"}));
+    get("/api/bookmarks", wrap(&Impl::get_bookmarks, {"run"}));
+    post("/api/bookmarks", wrap(&Impl::post_bookmark, {"run"}));
+    post("/api/export", wrap(&Impl::start_export, with(view, {"from", "to", "fps", "speed"})));
+    get("/api/export/status", wrap(&Impl::export_status, {"id"}));
+    get("/api/export/file", wrap(&Impl::export_file, {"id"}));
     http.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
       if (!res.body.empty()) return;
       const auto known = allowed_methods.find(req.path);
