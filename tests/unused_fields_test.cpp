@@ -40,6 +40,10 @@ const UnusedCase kCases[] = {
     {"magnet_in_force_mode", R"({"control": {"magnet_moment": 0.1}})", "/control/magnet_moment", "\"field\""},
     {"force_on_a_kinematic_tip", R"({"control": {"mode": "kinematic", "kp": 0.5, "disturbance": {"amplitude": 0.01}}})",
      "/control/disturbance", "\"kinematic\""},
+    {"frequency_of_no_disturbance", R"({"control": {"disturbance": {"amplitude": 0, "omega": 50}}})", "/control/disturbance/omega",
+     "amplitude is 0"},
+    {"frequency_of_no_oscillation", R"({"maze": null, "boundary": {"prescribed": [{"node": 0, "velocity": [0, 0.1], "frequency": 3}]}})",
+     "/boundary/prescribed/0/frequency", "amplitude is [0, 0]"},
     {"tolerance_with_a_fixed_step", R"({"maze": null, "solver": {"adaptive": "off", "rtol": 1e-3}})", "/solver/rtol", "\"off\""},
     {"largest_step_with_dt_alone", R"({"maze": null, "solver": {"dt": 2e-3, "dt_max": 0.01}})", "/solver/dt_max", "\"retry\""},
     {"burst_without_mean_floor", R"({"maze": null, "solver": {"dt_mean_min": 0, "mean_burst": 5}})", "/solver/mean_burst",
@@ -80,7 +84,9 @@ TEST(UnusedFields, TheSameFieldWhereItIsUsedIsNotReported) {
                            R"({"control": {"mode": "kinematic", "kp": 0.5, "disturbance": {"kind": "position", "amplitude": 0.01}}})",
                            R"({"maze": null, "solver": {"adaptive": "error", "rtol": 1e-3, "dt_max": 0.01}})",
                            R"({"maze": null, "solver": {"mode": "static", "load_steps": 3}})",
-                           R"({"maze": null, "loads": {"point": [{"node": -1, "force": [0, 1], "profile": "sine", "frequency": 9}]}})"}) {
+                           R"({"maze": null, "loads": {"point": [{"node": -1, "force": [0, 1], "profile": "sine", "frequency": 9}]}})",
+                           R"({"maze": null, "boundary": {"prescribed": [{"node": 0, "amplitude": [0, 0.01], "frequency": 3}]}})",
+                           R"({"control": {"disturbance": {"amplitude": 0.001, "omega": 50}}})"}) {
     const Scene scene = read_scene_text(text, "s.json");
     EXPECT_TRUE(scene.unused_given.empty()) << text << ": " << scene.unused_given[0].pointer;
   }
@@ -108,6 +114,13 @@ TEST(UnusedFields, RunWarnsNamingTheFileAndRecordsThemInTheSummary) {
   ASSERT_EQ(summary["unused_fields"].size(), 2u) << summary["unused_fields"].dump();
   EXPECT_EQ(summary["unused_fields"][0]["pointer"], "/solver/load_steps");
   EXPECT_EQ(summary["unused_fields"][1]["pointer"], "/contact/friction");
+  // The commands that write a scene of their own say so too.
+  test::write_text(dir + "/maze.json", R"({"contact": {"mode": "paper", "friction": 0.1}})");
+  const test::CommandResult m = test::run_vascsim("maze --scene " + dir + "/maze.json --out " + dir + "/maze_out.json");
+  ASSERT_EQ(m.exit_code, 0) << m.output;
+  EXPECT_NE(m.output.find("vascsim maze: warning: " + dir + "/maze.json: /contact/friction has no effect here"), std::string::npos)
+      << m.output;
+  EXPECT_EQ(test::read_text(dir + "/maze_out.json").find("friction"), std::string::npos);
 }
 
 // A field reported unused must change nothing: paper contact in free space (no walls) changed the

@@ -51,6 +51,7 @@ int run_maze_command(int argc, char** argv) {
   if (!scene.has_environment) throw UsageError("scene " + scene.file + " has no maze (\"maze\": null)");
   if (scene.environment == EnvironmentKind::kVessels)
     throw UsageError("scene " + scene.file + " has vessels, not a maze (use vascsim vessels)");
+  warn_unused_fields("maze", scene);
   MazeSpec& maze = scene.maze;
   const bool generator_option = args.value("seed") || args.value("rows") || args.value("cols") || args.value("lumen-width");
   if (maze.explicit_walls && generator_option)

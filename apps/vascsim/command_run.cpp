@@ -136,9 +136,7 @@ int run_run_command(int argc, char** argv) {
   // Compiled before any output exists: a scene that cannot run leaves nothing behind.
   Run run(compile(input));
   const Scene& scene = run.scene();  // as resolved: the duration a maze scene runs, the rod at the entry
-  for (const UnusedField& u : input.unused_given)
-    std::fprintf(stderr, "vascsim run: warning: %s: %s has no effect here: %s (summary.json /unused_fields)\n",
-                 input.file.c_str(), u.pointer.c_str(), u.why.c_str());
+  warn_unused_fields("run", input);
   check_log_size(scene, run, max_log_size(args));
 
   // Refuse to mix a new run into a directory holding someone's files.

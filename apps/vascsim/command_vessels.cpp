@@ -44,6 +44,7 @@ int run_vessels_command(int argc, char** argv) {
   const Scene scene = read_scene_file(*scene_file);
   if (!scene.has_environment || scene.environment != EnvironmentKind::kVessels)
     throw UsageError("scene " + scene.file + " has no \"vessels\" section (for a maze use vascsim maze)");
+  warn_unused_fields("vessels", scene);
   // Never replace the scene or the mask image it was made from, nor a device or pipe, even with --force.
   std::vector<std::string> inputs{scene.file};
   if (scene.vessels.from_mask) inputs.push_back(scene.vessels.mask.resolved);

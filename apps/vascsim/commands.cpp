@@ -24,6 +24,13 @@ void print_help() {
 
 }  // namespace
 
+void warn_unused_fields(const char* command, const Scene& scene) {
+  for (const UnusedField& u : scene.unused_given)
+    std::fprintf(stderr, "vascsim %s: warning: %s: %s has no effect here: %s%s\n", command, scene.file.c_str(),
+                 u.pointer.c_str(), u.why.c_str(),
+                 std::strcmp(command, "run") == 0 ? " (summary.json /unused_fields)" : " (left out of the scene written)");
+}
+
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"maze", "generate and solve a maze; write walls and path as JSON", run_maze_command},

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "apps/vascsim/renderer_program.h"
+#include "sim/scene/scene.h"
 
 namespace vascsim::cli {
 
@@ -15,6 +16,9 @@ struct Command {
 };
 
 const std::vector<Command>& commands();
+// Warns on stderr, as `vascsim <command>`, of each field the scene file gave that its
+// configuration does not use (sim/scene/unused_fields.h).
+void warn_unused_fields(const char* command, const Scene& scene);
 // What main does: --version, --help, or the subcommand argv[1], its errors printed and turned
 // into exit codes (2 for usage and input errors, 3 for internal ones). The sweep runs
 // `vascsim run` through it in forked children.

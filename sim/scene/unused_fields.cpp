@@ -37,7 +37,9 @@ void control_fields(const Scene& s, std::vector<UnusedField>& out) {
     add(out, "/control", {"magnet_moment", "field_strength"}, "they set the tip magnet of control.mode \"field\"");
   // The kinematic tip follows its command exactly: a force on it is taken up by the motion
   // imposed on it and moves nothing.
-  if (c.mode == ActuationMode::kKinematic && c.disturbance.kind == DisturbanceKind::kForce && c.disturbance.amplitude > 0.0)
+  if (c.disturbance.amplitude == 0.0)
+    add(out, "/control/disturbance", {"omega", "direction"}, "control.disturbance.amplitude is 0 (switched off)");
+  else if (c.mode == ActuationMode::kKinematic && c.disturbance.kind == DisturbanceKind::kForce)
     out.push_back({"/control/disturbance",
                    "a disturbance of kind \"force\" acts on the tip, whose motion control.mode \"kinematic\" imposes "
                    "(kind \"position\" disturbs the command)"});
@@ -58,6 +60,12 @@ void contact_fields(const Scene& s, std::vector<UnusedField>& out) {
     add(out, "/contact", {"slip_velocity"}, "contact.friction is 0 (it regularises friction)");
   if (c.mode != ContactMode::kPaper)
     add(out, "/contact", {"paper_gain", "paper_iterations"}, mode + " (they set the paper's penalty)");
+}
+
+void boundary_fields(const Scene& s, std::vector<UnusedField>& out) {
+  for (std::size_t i = 0; i < s.boundary.prescribed.size(); ++i)
+    if (s.boundary.prescribed[i].amplitude.isZero(0.0))
+      add(out, "/boundary/prescribed/" + std::to_string(i), {"frequency"}, "its amplitude is [0, 0] (no oscillation)");
 }
 
 void loads_fields(const Scene& s, std::vector<UnusedField>& out) {
@@ -101,6 +109,7 @@ std::vector<UnusedField> unused_fields(const Scene& scene) {
   solver_fields(scene, out);  // also the run section's fields in static mode
   control_fields(scene, out);
   contact_fields(scene, out);
+  boundary_fields(scene, out);
   loads_fields(scene, out);
   return out;
 }
