@@ -53,6 +53,17 @@ json get_json(LiveServer& s, const std::string& query, int expected_status = 200
   return json::parse(r->body, nullptr, false);
 }
 
+// Export `id`'s status once it is no longer running (at most a minute).
+json finished_export(LiveServer& s, int id) {
+  json status;
+  for (int wait = 0; wait < 600; ++wait) {
+    status = get_json(s, "/api/export/status?id=" + std::to_string(id));
+    if (status["state"] != "running") break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return status;
+}
+
 TEST(ReplayServer, FrameIsByteIdenticalToRenderStill) {
   ScratchDir dir("replay_still");
   const std::string run = synthetic_run(dir, "run", long_spec());
@@ -424,12 +435,7 @@ TEST(ReplayServer, ExportWritesANewMp4EachTime) {
     ASSERT_TRUE(r);
     ASSERT_EQ(r->status, 200) << r->body;
     const int id = json::parse(r->body)["id"];
-    json status;
-    for (int wait = 0; wait < 600; ++wait) {
-      status = get_json(s, "/api/export/status?id=" + std::to_string(id));
-      if (status["state"] != "running") break;
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
+    const json status = finished_export(s, id);
     ASSERT_EQ(status["state"], "done") << status.dump();
     EXPECT_EQ(status["frames_done"], 11);
     files.push_back(status["file"]);
@@ -468,12 +474,7 @@ TEST(ReplayServer, AnExportWithTheOverlayIsAVideoOfBoth) {
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
   const int id = json::parse(r->body)["id"];
-  json status;
-  for (int wait = 0; wait < 600; ++wait) {
-    status = get_json(s, "/api/export/status?id=" + std::to_string(id));
-    if (status["state"] != "running") break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
+  const json status = finished_export(s, id);
   ASSERT_EQ(status["state"], "done") << status.dump();
   EXPECT_EQ(render::probe_video(a + "/" + status["file"].get<std::string>()).frames, 11);
 }

@@ -100,8 +100,13 @@ double way_in_meets(const WayIn& w, double radius, double rounding, const std::v
   const double reach = radius + 2.0 * rounding;
   double nearest = -1.0;
   const auto note = [&](double s) { nearest = nearest < 0.0 ? s : std::min(nearest, s); };
+  const Vec2 low = w.tip.cwiseMin(w.far) - Vec2::Constant(reach), high = w.tip.cwiseMax(w.far) + Vec2::Constant(reach);
   for (const Polyline& ring : others) {
-    if (inside_lumen({ring}, w.tip) || inside_lumen({ring}, w.far)) note(inside_lumen({ring}, w.tip) ? 0.0 : w.length);
+    Vec2 ring_low = ring.front(), ring_high = ring.front();
+    for (const Vec2& q : ring) ring_low = ring_low.cwiseMin(q), ring_high = ring_high.cwiseMax(q);
+    if ((ring_low.array() > high.array()).any() || (ring_high.array() < low.array()).any()) continue;  // far away
+    if (inside_lumen({ring}, w.tip)) note(0.0);
+    else if (inside_lumen({ring}, w.far)) note(w.length);
     for (std::size_t k = 0; k < ring.size(); ++k) {
       const Vec2 &q0 = ring[k], &q1 = ring[(k + 1) % ring.size()];
       if (const double t = crossing(w.tip, w.far, q0, q1); t >= 0.0) {

@@ -111,7 +111,7 @@ Profile profile_of(const VesselSegmentSpec& seg, const Vec2& from, const Vec2& t
   return p;
 }
 
-// Whether the route folds back at the node between steps `came` and `goes` (docs: folds_back,
+// Whether the route folds back at the node between steps `came` and `goes` (folds_back,
 // with the segments' whole lengths as the legs and their ends' directions).
 bool route_folds_back(const VesselGraph& g, const RouteStep& came, const RouteStep& goes, Vec2& in, Vec2& out) {
   const ResolvedSegment& a = g.segments[static_cast<std::size_t>(came.segment)];
