@@ -256,6 +256,9 @@ TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
   EXPECT_NEAR(got_lo, lo, 1e-9 * (1 + std::abs(lo)));  // stored as float
   EXPECT_NEAR(got_hi, hi, 1e-6 * hi);
   EXPECT_EQ(series["unit"], "N");
+  // The reduction is named as asked (a vector channel's default said "value", which no request can give).
+  EXPECT_EQ(get_json(s, "/api/series?channel=tip/reference&points=3")["reduce"], "max");
+  EXPECT_EQ(get_json(s, "/api/series?channel=tip/reference&points=3&reduce=x")["reduce"], "x");
 }
 
 // A log that a run is still writing: the server sees appended frames, then the summary.

@@ -238,8 +238,9 @@ struct ReplayServer::Impl {
       throw ParamError("channel", "no channel '" + name->substr(0, 64) + "' in this run (see /api/run)");
     const LogChannel& c = h.channels[static_cast<std::size_t>(channel)];
     SeriesReduce reduce;
+    const std::string reduce_asked = p.text("reduce").value_or("max");
     try {
-      reduce = reduce_for(c, p.text("reduce").value_or("max"));
+      reduce = reduce_for(c, reduce_asked);
     } catch (const std::invalid_argument& e) {
       throw ParamError("reduce", e.what());
     }
@@ -251,7 +252,7 @@ struct ReplayServer::Impl {
     send_json(res, {{"run", run.id()},
                     {"channel", c.name},
                     {"unit", c.unit},
-                    {"reduce", reduce_name(reduce)},
+                    {"reduce", reduce_asked},  // as asked: "value" is no name a request can give
                     {"t", d.t},
                     {"min", d.min},
                     {"max", d.max}});

@@ -17,24 +17,12 @@ SeriesReduce reduce_for(const LogChannel& c, const std::string& name) {
       if (name == "x") return SeriesReduce::kX;
       if (name == "y") return SeriesReduce::kY;
       if (name == "max" || name == "norm") return SeriesReduce::kValue;
-      throw std::invalid_argument("expected norm, x or y for the vector channel '" + c.name + "'");
+      throw std::invalid_argument("expected norm (or max, the default: the same), x or y for the vector channel '" + c.name + "'");
     case ChannelLayout::kScalars:
       if (name == "max" || name == "norm") return name == "norm" ? SeriesReduce::kNorm : SeriesReduce::kValue;
       throw std::invalid_argument("expected max (the first value) or norm for the scalar channel '" + c.name + "'");
   }
   throw std::invalid_argument("unknown channel layout");
-}
-
-const char* reduce_name(SeriesReduce r) {
-  switch (r) {
-    case SeriesReduce::kMax: return "max";
-    case SeriesReduce::kSum: return "sum";
-    case SeriesReduce::kNorm: return "norm";
-    case SeriesReduce::kX: return "x";
-    case SeriesReduce::kY: return "y";
-    case SeriesReduce::kValue: return "value";
-  }
-  return "value";
 }
 
 double reduce_values(const double* v, const LogChannel& c, SeriesReduce r) {

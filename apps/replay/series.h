@@ -23,7 +23,6 @@ enum class SeriesReduce {
 // "max", "sum", "norm", "x", "y"; `reduce_for` picks what a name means for a channel's layout
 // and throws std::invalid_argument (message names the expected values) if it does not apply.
 SeriesReduce reduce_for(const LogChannel& channel, const std::string& name);
-const char* reduce_name(SeriesReduce reduce);
 
 // The reduced value of one channel's `values` (channel.count doubles).
 double reduce_values(const double* values, const LogChannel& channel, SeriesReduce reduce);
