@@ -131,8 +131,11 @@ double way_in_meets(const WayIn& w, double radius, double rounding, const std::v
 }
 
 // A mask: its own vessel may run on behind the start (to the image's edge, where the trace
-// closes it); once the way in has left the lumen it must not enter it again.
-double way_in_reenters(const WayIn& w, const std::vector<Polyline>& rings) {
+// closes it); once the way in has left the lumen for more than `gap` it must not enter it again.
+// The gap: the inlet's direction comes from a pixel trace (a degree or more off), so along a
+// thin vessel the way in drifts out through the jagged wall and grazes it again; that is not
+// another vessel (a straight 6 px vessel at 5 degrees was refused).
+double way_in_reenters(const WayIn& w, const std::vector<Polyline>& rings, double gap) {
   std::vector<double> cuts;
   for (const Polyline& ring : rings)
     for (std::size_t k = 0; k < ring.size(); ++k)
@@ -144,8 +147,8 @@ double way_in_reenters(const WayIn& w, const std::vector<Polyline>& rings) {
   for (const double to : cuts) {
     if (to > from) {
       const bool inside = inside_lumen(rings, w.at(0.5 * (from + to) * w.length));
-      if (!inside) left = true;
-      else if (left) return from * w.length;
+      if (!inside && (to - from) * w.length > gap) left = true;
+      else if (inside && left) return from * w.length;
     }
     from = to;
   }
@@ -180,13 +183,20 @@ Environment graph_environment(const VesselsSpec& spec, double rod_length) {
   const std::vector<RouteStep> steps = vessel_route(graph, spec);
   const std::vector<VesselSample> route = route_samples(graph, steps);
   const int inlet_segment = steps.front().segment;
-  std::vector<Polyline> pieces, others;  // others: off the inlet's own segment
+  const bool inlet_forward = steps.front().forward;
+  const double start_radius = route.front().radius, rounding = kRelativeRounding * smallest;
+  // What the way in must keep clear of: every other segment, and the inlet's own segment from
+  // beyond the stretch at the start that touches the introducer by design (a vessel that loops
+  // back across its own way in joins it as another segment would).
+  const double own_clear = 2.0 * (start_radius + 2.0 * rounding) + start_radius;
+  std::vector<Polyline> pieces, others;
   for (std::size_t i = 0; i < graph.segments.size(); ++i) {
     const auto& s = graph.segments[i];
     for (std::size_t k = 1; k < s.samples.size(); ++k) {
       pieces.push_back(tapered_tube_ring(s.samples[k - 1].point, s.samples[k - 1].radius, s.samples[k].point,
                                          s.samples[k].radius, chord_error));
-      if (static_cast<int>(i) != inlet_segment) others.push_back(pieces.back());
+      const double from_start = inlet_forward ? s.samples[k - 1].s : s.length - s.samples[k].s;
+      if (static_cast<int>(i) != inlet_segment || from_start > own_clear) others.push_back(pieces.back());
     }
   }
   for (const auto& sac : graph.sacs) {
@@ -201,7 +211,6 @@ Environment graph_environment(const VesselsSpec& spec, double rod_length) {
   }
   env.inlet.tip = env.centreline.front();
   env.inlet.inward = (env.centreline[1] - env.centreline[0]).normalized();
-  const double rounding = kRelativeRounding * smallest;
   const WayIn w = way_in(env.inlet, env.centreline_radius.front(), rod_length);
   if (const double s = way_in_meets(w, env.centreline_radius.front(), rounding, others); s >= 0.0)
     refuse_way_in(w, s, "comes within the introducer's radius of another vessel, which its lumen would join to the inlet,");
@@ -224,7 +233,8 @@ Environment mask_environment(const VesselMaskSpec& mask, double rod_length) {
   while (k + 1 < env.centreline.size() && (env.centreline[k] - env.centreline[0]).norm() < reach) ++k;
   env.inlet.inward = (env.centreline[k] - env.centreline[0]).normalized();
   const WayIn w = way_in(env.inlet, env.centreline_radius.front(), rod_length);
-  if (const double s = way_in_reenters(w, trace.outline); s >= 0.0) refuse_way_in(w, s, "enters another vessel", mask.file);
+  if (const double s = way_in_reenters(w, trace.outline, 2.0 * env.centreline_radius.front()); s >= 0.0)
+    refuse_way_in(w, s, "enters another vessel", mask.file);
   finish(env, trace.outline, 0.0, 0.1 * mask.pixel_size, rod_length);
   return env;
 }

@@ -33,14 +33,17 @@ std::string segment_pointer(std::size_t i) { return "/vessels/segments/" + std::
 
 // A tube of `radius` that comes in along leg `in` and leaves along leg `out` (vectors as long as
 // the legs) turning by more than 90 degrees: its two legs' tubes part 2 radius / sin(angle between
-// the legs) from the corner. If that is beyond the shorter leg, the legs overlap all along it: the
-// vessel folds onto itself (a 180-degree turn is the extreme), and the reference path has no
-// corner it can round (a rounded 179.9-degree turn cut the whole hairpin off).
+// the legs) from the corner. If that is beyond the shorter leg, and that leg is at least two
+// diameters long, one stretch of vessel lies inside the other all along it: the vessel folds
+// onto itself, and the reference path has no corner it can round (a rounded 179.9-degree turn
+// cut the whole hairpin off). A shorter leg is a jog, not a fold (a 100-degree Z-jog with a leg
+// of two radii was refused). An exact reversal is always a fold: no side to round it to.
 bool folds_back(const Vec2& in, const Vec2& out, double radius) {
   if (in.dot(out) >= 0.0) return false;
-  const double li = in.norm(), lo = out.norm();
+  const double li = in.norm(), lo = out.norm(), shorter = std::min(li, lo);
   const double sin_between = std::abs(in.x() * out.y() - in.y() * out.x()) / (li * lo);
-  return 2.0 * radius >= sin_between * std::min(li, lo);
+  if (sin_between <= 1e-9) return true;
+  return shorter >= 4.0 * radius && 2.0 * radius >= sin_between * shorter;
 }
 
 double turn_degrees(const Vec2& in, const Vec2& out) {
