@@ -80,6 +80,9 @@ INSTANTIATE_TEST_SUITE_P(Scenes, UnusedFields, ::testing::ValuesIn(kCases),
 TEST(UnusedFields, TheSameFieldWhereItIsUsedIsNotReported) {
   for (const char* text : {R"({"contact": {"mode": "implicit", "friction": 0.1, "slip_velocity": 0.01}})",
                            R"({"contact": {"mode": "paper", "paper_gain": 10}})",
+                           // Self-contact's barrier takes these two, with walls or without, in any mode.
+                           R"({"maze": null, "contact": {"self": true, "activation_distance": 0.001, "stiffness": 2}})",
+                           R"({"contact": {"mode": "paper", "self": true, "activation_distance": 0.001, "stiffness": 2}})",
                            R"({"control": {"mode": "field", "magnet_moment": 0.1}})",
                            R"({"control": {"mode": "kinematic", "kp": 0.5, "disturbance": {"kind": "position", "amplitude": 0.01}}})",
                            R"({"maze": null, "solver": {"adaptive": "error", "rtol": 1e-3, "dt_max": 0.01}})",

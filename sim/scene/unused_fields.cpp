@@ -35,10 +35,10 @@ void control_fields(const Scene& s, std::vector<UnusedField>& out) {
     add(out, "/control", {"kp", "kd", "actuated_nodes"}, "control.mode is \"none\" (no tip actuation)");
   if (c.mode != ActuationMode::kField)
     add(out, "/control", {"magnet_moment", "field_strength"}, "they set the tip magnet of control.mode \"field\"");
-  // The kinematic tip follows its command exactly: a force on it is taken up by the motion
-  // imposed on it and moves nothing.
   if (c.disturbance.amplitude == 0.0)
     add(out, "/control/disturbance", {"omega", "direction"}, "control.disturbance.amplitude is 0 (switched off)");
+  // The kinematic tip follows its command exactly: a force on it is taken up by the motion
+  // imposed on it and moves nothing.
   else if (c.mode == ActuationMode::kKinematic && c.disturbance.kind == DisturbanceKind::kForce)
     out.push_back({"/control/disturbance",
                    "a disturbance of kind \"force\" acts on the tip, whose motion control.mode \"kinematic\" imposes "
@@ -47,16 +47,22 @@ void control_fields(const Scene& s, std::vector<UnusedField>& out) {
 
 void contact_fields(const Scene& s, std::vector<UnusedField>& out) {
   const ContactSpec& c = s.contact;
+  // Self-contact is a barrier too: it takes its reach and stiffness from the same two fields.
+  const auto barrier_unused = [&](const std::string& why) {
+    if (!c.self) add(out, "/contact", {"activation_distance", "stiffness"}, why + "; contact.self is off");
+  };
   if (!s.has_environment) {
-    add(out, "/contact", {"mode", "activation_distance", "stiffness", "friction", "slip_velocity", "paper_gain", "paper_iterations"},
-        "a scene without a maze or vessels has no walls (contact.self is the rod's contact with itself)");
+    const std::string why = "a scene without a maze or vessels has no walls";
+    add(out, "/contact", {"mode", "friction", "slip_velocity", "paper_gain", "paper_iterations"}, why);
+    barrier_unused(why);
     return;
   }
   const std::string mode = std::string("contact.mode is \"") + contact_mode_name(c.mode) + "\"";
-  if (c.mode != ContactMode::kImplicit)
-    add(out, "/contact", {"activation_distance", "stiffness", "friction", "slip_velocity"},
-        mode + " (they set the implicit barrier and its friction; the paper's penalty has neither)");
-  else if (c.friction == 0.0)
+  if (c.mode != ContactMode::kImplicit) {
+    const std::string why = mode + " (the implicit barrier and its friction are off; the paper's penalty has neither)";
+    add(out, "/contact", {"friction", "slip_velocity"}, why);
+    barrier_unused(why);
+  } else if (c.friction == 0.0)
     add(out, "/contact", {"slip_velocity"}, "contact.friction is 0 (it regularises friction)");
   if (c.mode != ContactMode::kPaper)
     add(out, "/contact", {"paper_gain", "paper_iterations"}, mode + " (they set the paper's penalty)");
