@@ -131,6 +131,10 @@ TEST(SweepSpec, FieldsUnusedInSomeRunsAreSetAndReportedThere) {
   const Scene off = read_scene_text(plan.runs[1].scene_json, "run");
   ASSERT_EQ(off.unused_given.size(), 1u);
   EXPECT_EQ(off.unused_given[0].pointer, "/solver/rtol");
+  // The plan counts them, for the sweep to say so once before anything runs.
+  ASSERT_EQ(plan.unused.size(), 1u);
+  EXPECT_EQ(plan.unused[0].pointer, "/solver/rtol");
+  EXPECT_EQ(plan.unused[0].runs, 1u);
   EXPECT_EQ(plan_of(sweep_with_axes(R"({"/solver/load_steps": [2, 4]})")).runs.size(), 2u);
 }
 

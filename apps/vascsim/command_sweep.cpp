@@ -184,6 +184,9 @@ int run_sweep_command(int argc, char** argv) {
     if (args.value("run-index")) throw UsageError("--run-index needs the sweep directory DIR, not the sweep file");
     const SweepSpec spec = read_sweep_file(input);
     const SweepPlan plan = expand_sweep(spec);
+    for (const SweepUnusedField& u : plan.unused)
+      std::fprintf(stderr, "vascsim sweep: warning: %s has no effect in %zu of %zu runs: %s (each run's summary.json /unused_fields)\n",
+                   u.pointer.c_str(), u.runs, plan.runs.size(), u.why.c_str());
     if (args.flag("dry-run")) {
       std::printf("sweep %s: %zu runs of %s, every scene checked\n", spec.name.c_str(), plan.runs.size(), spec.scene_path.c_str());
       const SweepManifest m = manifest_of(plan);

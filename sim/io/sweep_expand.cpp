@@ -1,5 +1,6 @@
 #include "sim/io/sweep_expand.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -153,7 +154,11 @@ SweepPlan expand_sweep_with_scene(const SweepSpec& spec, const std::string& scen
     }
     run.scene_json = scene.dump(2) + "\n";
     try {
-      read_scene_text(run.scene_json, scene_label);
+      for (const UnusedField& u : read_scene_text(run.scene_json, scene_label).unused_given) {
+        auto it = std::find_if(plan.unused.begin(), plan.unused.end(), [&](const auto& f) { return f.pointer == u.pointer; });
+        if (it == plan.unused.end()) it = plan.unused.insert(plan.unused.end(), {u.pointer, u.why, 0});
+        ++it->runs;
+      }
     } catch (const InputError& e) {
       throw InputError(spec.file + ": run " + run.id + " (" + describe_run(spec, run) + "): " + e.what());
     }

@@ -26,9 +26,16 @@ struct SweepRun {
   std::string scene_json;           // the run's scene file (DIR/runs/<id>/scene.json)
 };
 
+// A field some runs' scenes give but do not use (sim/scene/unused_fields.h): each such run warns
+// of it when it runs; the sweep says so once, before any runs.
+struct SweepUnusedField {
+  std::string pointer, why;  // why: as the first run that leaves it unused says
+  std::size_t runs = 0;      // how many runs
+};
 struct SweepPlan {
   SweepSpec spec;
   std::vector<SweepRun> runs;  // in index order: product with the first axis varying slowest
+  std::vector<SweepUnusedField> unused;  // in the order first met
 };
 
 // Reads the base scene (spec.scene_path), expands and checks every run. Throws InputError.
