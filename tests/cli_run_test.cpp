@@ -163,6 +163,8 @@ TEST(CliRun, ForcedRunRemovesThePreviousRunsOutputsFirst) {
   fs::create_directories(dir + "/out/plots");
   write_text(dir + "/out/plots/snapshots.png", "an old plot");
   write_text(dir + "/out/notes.txt", "mine");
+  write_text(dir + "/out/bookmarks.json", R"({"format": "vascsim-bookmarks/1", "bookmarks": []})");
+  write_text(dir + "/out/export-001.mp4", "a replay export");
   // The next run fails at its first step: it writes a new summary (ok false) and keeps nothing old.
   write_text(dir + "/bad.json", R"({"maze": null, "rod": {"nodes": 10}, "run": {"duration": 1},
       "loads": {"point": [{"node": -1, "force": [0, 1e6]}]}, "solver": {"max_iterations": 1, "adaptive": false, "rel_tol": 1e-14}})");
@@ -172,6 +174,11 @@ TEST(CliRun, ForcedRunRemovesThePreviousRunsOutputsFirst) {
   EXPECT_FALSE(fs::exists(dir + "/out/plots/snapshots.png")) << "the previous run's plot survived";
   EXPECT_NE(read_text(dir + "/out/summary.json").find("\"ok\": false"), std::string::npos);
   EXPECT_EQ(read_text(dir + "/out/notes.txt"), "mine");
+  // The replay's files of the earlier run stay, and the user is told they describe that run.
+  EXPECT_EQ(read_text(dir + "/out/export-001.mp4"), "a replay export");
+  EXPECT_NE(r.output.find("note: " + dir + "/out/bookmarks.json, of the earlier run in this directory, is kept as it was"),
+            std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(dir + "/out/export-001.mp4, of the earlier run"), std::string::npos) << r.output;
   fs::remove_all(dir);
 }
 

@@ -1,10 +1,13 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
@@ -74,13 +77,23 @@ class Progress {
 
 // A forced run first removes what a previous run wrote here, so the directory never mixes two
 // runs (an old summary beside a new partial log, an old video beside a new log). The user's
-// files (bookmarks, exports, anything else) stay.
+// files (bookmarks, exports, anything else) stay, and the user is told which of them describe
+// the earlier run: bookmarks name its times, exports show it.
 void remove_run_outputs(const std::string& dir) {
   std::error_code ec;
   for (const char* name : {"summary.json", "frames.vlog", "video.mp4", "video.webm"}) fs::remove(fs::path(dir) / name, ec);
   for (const char* name : {"tip_trajectory.png", "actuation_force.png", "snapshots.png", "tracking_error.png",
                            "contact_force.png"})
     fs::remove(fs::path(dir) / "plots" / name, ec);
+  std::vector<std::string> kept;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "bookmarks.json" || (name.rfind("export-", 0) == 0 && entry.path().extension() == ".mp4")) kept.push_back(name);
+  }
+  std::sort(kept.begin(), kept.end());
+  for (const auto& name : kept)
+    std::fprintf(stderr, "vascsim run: note: %s/%s, of the earlier run in this directory, is kept as it was\n", dir.c_str(),
+                 name.c_str());
 }
 
 // Bytes from "10G", "500M", "2e9" (k, M, G: powers of 1000).
