@@ -15,13 +15,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// About 2 kB a frame for 5000 frames: a 96 kB disk fills after a few dozen.
+const char* const kBigLogScene = R"({"maze": null, "rod": {"nodes": 20}, "run": {"duration": 5, "output_interval": 0.001}})";
+
 TEST(DiskFull, RunStopsWithExit2AndKeepsEveryCompletedFrame) {
   SmallTmpfs disk("run", 96 * 1024);
   ASSERT_TRUE(disk.ok()) << disk.error();
   const std::string dir = fresh_temp_dir("disk_full_run");
-  // About 2 kB a frame for 5000 frames: the 96 kB disk fills after a few dozen.
-  write_text(dir + "/scene.json",
-             R"({"maze": null, "rod": {"nodes": 20}, "run": {"duration": 5, "output_interval": 0.001}})");
+  write_text(dir + "/scene.json", kBigLogScene);
   const std::string out = disk.path() + "/run";
   const CommandResult r = run_vascsim("run " + dir + "/scene.json --out " + out + " --quiet");
   EXPECT_EQ(r.exit_code, 2) << r.output;
@@ -47,8 +48,7 @@ TEST(DiskFull, ASweepSaysHowTheRunEndedWhenItsStatusCannotBeWritten) {
   SmallTmpfs disk("sweep", 96 * 1024);
   ASSERT_TRUE(disk.ok()) << disk.error();
   const std::string dir = fresh_temp_dir("disk_full_sweep");
-  write_text(dir + "/scene.json",
-             R"({"maze": null, "rod": {"nodes": 20}, "run": {"duration": 5, "output_interval": 0.001}})");
+  write_text(dir + "/scene.json", kBigLogScene);
   write_text(dir + "/sweep.json", R"({"format": "vascsim-sweep/1", "scene": "scene.json", "axes": {"/rod/length": [0.4]}})");
   const CommandResult r = run_vascsim("sweep " + dir + "/sweep.json --out " + disk.path() + "/out --quiet");
   EXPECT_EQ(r.exit_code, 2) << r.output;

@@ -50,12 +50,8 @@ struct Equilibrium {
 };
 
 Equilibrium solve(double a, double phi, int nodes) {
-  Scene scene = test::cantilever(nodes);
-  const double ei = test::bending_stiffness(scene.rod), l = scene.rod.length;
-  scene.loads.magnet.enabled = true;
-  scene.loads.magnet.moment = 0.01;
-  scene.loads.magnet.field = a * ei / (l * scene.loads.magnet.moment);
-  scene.loads.magnet.angle = phi;
+  Scene scene = test::tip_magnet_cantilever(nodes, 0.0, phi);
+  scene.loads.magnet.field = a * test::bending_stiffness(scene.rod) / (scene.rod.length * scene.loads.magnet.moment);  // T
   scene.solver.load_steps = 20;
   const State state = test::static_equilibrium(scene);
   const int n = scene.rod.nodes;
@@ -110,13 +106,9 @@ TEST(MagnetLoad, AStrongFieldNearlyAgainstTheRodTurnsItTheShortWay) {
 // settings that make smaller increments; with 100 initial increments it follows the branch to
 // the exact angle, and does not warn.
 TEST(MagnetLoad, WhereTheBranchTurnsTooSharplyTheSolveJumpsAndSaysSo) {
-  Scene scene = test::cantilever(41);
+  Scene scene = test::tip_magnet_cantilever(41, 10.0, 3.0);
   scene.solver = SolverSpec{};
   scene.solver.mode = SolveMode::kStatic;
-  scene.loads.magnet.enabled = true;
-  scene.loads.magnet.moment = 0.01;
-  scene.loads.magnet.field = 10.0;
-  scene.loads.magnet.angle = 3.0;
   const double a = scene.loads.magnet.moment * scene.loads.magnet.field * scene.rod.length / test::bending_stiffness(scene.rod);
   StaticReport coarse, fine;
   test::static_equilibrium(scene, &coarse);
@@ -148,11 +140,7 @@ TEST(MagnetLoad, AStepOfTheMotionNeverJumps) {
   for (const Case& c : {Case{"fast", false, 1.0, 0.5}, Case{"balanced", false, 1.0, 0.5}, Case{"balanced", false, 10.0, 0.0},
                         Case{"fast", true, 1.0, 0.5}}) {
     const std::string label = std::string(c.preset) + (c.fixed ? " fixed" : "") + " B " + std::to_string(c.field);
-    Scene scene = test::cantilever(41);
-    scene.loads.magnet.enabled = true;
-    scene.loads.magnet.moment = 0.01;
-    scene.loads.magnet.field = c.field;  // T: a = m B L / EI = 289 at 1 T
-    scene.loads.magnet.angle = phi;
+    Scene scene = test::tip_magnet_cantilever(41, c.field, phi);
     const double a = scene.loads.magnet.moment * scene.loads.magnet.field * scene.rod.length / test::bending_stiffness(scene.rod);
     scene.loads.damping.enabled = c.damping > 0;
     scene.loads.damping.coefficient = c.damping;

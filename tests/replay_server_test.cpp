@@ -53,6 +53,15 @@ json get_json(LiveServer& s, const std::string& query, int expected_status = 200
   return json::parse(r->body, nullptr, false);
 }
 
+// Starts an export (`query`: its parameters) and returns its id, or -1 with the test failed.
+int start_export(LiveServer& s, const std::string& query) {
+  const auto r = s.client().Post(s.authorised("/api/export?" + query).c_str(), "", "text/plain");
+  EXPECT_TRUE(r) << query << ": no answer";
+  if (!r) return -1;
+  EXPECT_EQ(r->status, 200) << r->body;
+  return r->status == 200 ? json::parse(r->body)["id"].get<int>() : -1;
+}
+
 // Export `id`'s status once it is no longer running (at most a minute).
 json finished_export(LiveServer& s, int id) {
   json status;
@@ -433,11 +442,8 @@ TEST(ReplayServer, ExportWritesANewMp4EachTime) {
   LiveServer s({{run}});
   std::vector<std::string> files;
   for (int k = 0; k < 2; ++k) {
-    const auto r = s.client().Post(s.authorised("/api/export?from=1&to=2&width=160&height=120&fps=10").c_str(), "",
-                                   "text/plain");
-    ASSERT_TRUE(r);
-    ASSERT_EQ(r->status, 200) << r->body;
-    const int id = json::parse(r->body)["id"];
+    const int id = start_export(s, "from=1&to=2&width=160&height=120&fps=10");
+    ASSERT_GT(id, 0);
     const json status = finished_export(s, id);
     ASSERT_EQ(status["state"], "done") << status.dump();
     EXPECT_EQ(status["frames_done"], 11);
@@ -472,11 +478,8 @@ TEST(ReplayServer, AnExportWithTheOverlayIsAVideoOfBoth) {
   other.speed = 0.002;
   const std::string b = synthetic_run(dir, "b", other);
   LiveServer s({{a, b}});
-  const auto r = s.client().Post(s.authorised("/api/export?from=1&to=2&width=160&height=120&fps=10&overlay=b").c_str(), "",
-                                 "text/plain");
-  ASSERT_TRUE(r);
-  ASSERT_EQ(r->status, 200) << r->body;
-  const int id = json::parse(r->body)["id"];
+  const int id = start_export(s, "from=1&to=2&width=160&height=120&fps=10&overlay=b");
+  ASSERT_GT(id, 0);
   const json status = finished_export(s, id);
   ASSERT_EQ(status["state"], "done") << status.dump();
   EXPECT_EQ(render::probe_video(a + "/" + status["file"].get<std::string>()).frames, 11);

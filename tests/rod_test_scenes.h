@@ -21,6 +21,17 @@ inline Scene cantilever(int nodes) {
   return s;
 }
 
+// The cantilever with a tip magnet of 0.01 A m^2 in a uniform field of `field` T at `angle` rad
+// from +x (loads.magnet; a = m B L / EI = 289 at 1 T for the paper's rod).
+inline Scene tip_magnet_cantilever(int nodes, double field, double angle) {
+  Scene s = cantilever(nodes);
+  s.loads.magnet.enabled = true;
+  s.loads.magnet.moment = 0.01;
+  s.loads.magnet.field = field;
+  s.loads.magnet.angle = angle;
+  return s;
+}
+
 // Three collinear nodes along +x with the first edge clamped: node 2 on the last edge moving along
 // the axis is an exactly linear spring k = EA/l0 (docs/references.md section 5) with mass
 // m = rho A l0 / 2, and k/m = 2 E / (rho l0^2) = (2 pi)^2 by the choice of E. Node 2 rests at x = 1 m.

@@ -90,13 +90,9 @@ TEST(RunWarnings, UnstableStaticEquilibriumIsCounted) {
 // dated by the load factor of the jump; 100 initial increments follow the branch and do not warn.
 // And a fixed 5 ms step that ends at a saddle (MagnetLoad.AStepOfTheMotionNeverJumps) is counted.
 TEST(RunWarnings, JumpsOfTheLoadPathAndUnresolvedStepsAreCounted) {
-  Scene magnet = test::cantilever(41);
+  Scene magnet = test::tip_magnet_cantilever(41, 10.0, 3.0);
   magnet.solver = SolverSpec{};
   magnet.solver.mode = SolveMode::kStatic;
-  magnet.loads.magnet.enabled = true;
-  magnet.loads.magnet.moment = 0.01;
-  magnet.loads.magnet.field = 10.0;
-  magnet.loads.magnet.angle = 3.0;
   const auto jumped = warnings_of(magnet);
   expect_count(jumped, "load_path_jumped", true);
   EXPECT_GT(jumped["load_path_jumped"]["first_time"].get<double>(), 0.0);
