@@ -208,6 +208,36 @@ TEST(VesselMask, StraightTubeAcrossTheBorderGivesItsAxisAndRadius) {
   EXPECT_NEAR(static_cast<double>(t.centreline.size() - 1), std::ceil(length), 2.0);
 }
 
+TEST(VesselMask, ARouteFromBorderToBorderHasItsVesselsRadiusAtBothEnds) {
+  // A tube straight across the image, the start on its last column and the goal on its first:
+  // the border closes the traced wall there, but the vessel runs on out of the image, so the
+  // radius at the ends is the tube's (it was half a pixel: refused as a narrowing).
+  const double r = 8.0;
+  const Sdf tube = capsule(Vec2(-20, 30.3), Vec2(140, 30.3), r);
+  VesselMaskSpec spec = draw_mask(120, 60, tube);
+  spec.start = Vec2(119.5, 30.3) * kPixel;
+  spec.goal = Vec2(0.5, 30.3) * kPixel;
+  const MaskTrace t = trace_vessel_mask(spec);
+  double radius_err = 0.0;
+  for (const double radius : t.radius) radius_err = std::max(radius_err, std::abs(radius / kPixel - r));
+  report("border-to-border radius error", radius_err);
+  EXPECT_LT(radius_err, 1.0);
+  EXPECT_NEAR(t.radius.front() / kPixel, r, 1.0);
+  EXPECT_NEAR(t.radius.back() / kPixel, r, 1.0);
+}
+
+TEST(VesselMask, AVesselAlongTheBorderKeepsTheBordersDistance) {
+  // Cut lengthwise by the top border: the border is the vessel's wall all along, so the radius is
+  // the distance to it (about half the drawn radius), not the drawn radius.
+  const double r = 8.0;
+  const Sdf tube = capsule(Vec2(-20, 60), Vec2(140, 60), r);
+  VesselMaskSpec spec = draw_mask(120, 60, tube);
+  spec.start = Vec2(110.5, 56.5) * kPixel;
+  spec.goal = Vec2(10.5, 56.5) * kPixel;
+  const MaskTrace t = trace_vessel_mask(spec);
+  for (const double radius : t.radius) EXPECT_LT(radius / kPixel, 0.75 * r);
+}
+
 TEST(VesselMask, YBranchesGiveTheirAxesAndRadii) {
   // A trunk from the right meets two branches at J, at +-30 degrees.
   const Vec2 j(65, 50), trunk_end(125, 50);

@@ -120,19 +120,45 @@ void smooth(Polyline& p, int passes) {
 // because the traced wall lies about midway between the last lumen and the first background
 // centre. The nearest background pixel of p is taken as the nearest of those of the 3 x 3 pixels
 // around it (the distance map's feature transform), which is exact at pixel centres and avoids
-// interpolating the distance, which sags between rows on a ridge.
-double radius_at(const VesselMaskSpec& spec, const DistanceMap& dm, const Vec2& p) {
+// interpolating the distance, which sags between rows on a ridge. `beyond_border`: that pixel is
+// outside the image (the border is the nearest wall).
+struct LumenRadius {
+  double radius = 0.0;  // m
+  bool beyond_border = false;
+};
+
+LumenRadius radius_at(const VesselMaskSpec& spec, const DistanceMap& dm, const Vec2& p) {
   const Pixel px = pixel_of(spec, p);
   double best = std::numeric_limits<double>::infinity();
+  bool beyond = false;
   for (int dr = -1; dr <= 1; ++dr) {
     for (int dc = -1; dc <= 1; ++dc) {
       const int c = px.col + dc, r = px.row + dr;
       if (c < 0 || r < 0 || c >= spec.width || r >= spec.height) continue;
       const int i = r * spec.width + c;
-      best = std::min(best, (p - pixel_centre(spec, dm.nearest_col[i], dm.nearest_row[i])).norm());
+      const int nc = dm.nearest_col[i], nr = dm.nearest_row[i];
+      const double d = (p - pixel_centre(spec, nc, nr)).norm();
+      if (d < best) best = d, beyond = nc < 0 || nr < 0 || nc >= spec.width || nr >= spec.height;
     }
   }
-  return std::max(best - 0.5 * spec.pixel_size, 0.5 * spec.pixel_size);
+  return {std::max(best - 0.5 * spec.pixel_size, 0.5 * spec.pixel_size), beyond};
+}
+
+// Where the route starts or ends at the image's border, the border is the nearest "wall" of its
+// first (last) points, but the vessel runs on out of the image there (the introducer continues it
+// at the start): the lumen is as wide as where the vessel's own walls are nearest, so those
+// points take the radius of the first point that sees them. Otherwise a start on the last column
+// had a radius of half a pixel (refused as a narrowing, or an introducer far thinner than its
+// vessel) and a goal there could hardly be reached. A vessel lying along the border (no point
+// sees its own walls) keeps the border's distances.
+void extend_radius_past_border(std::vector<double>& radius, const std::vector<bool>& beyond_border) {
+  const std::size_t n = radius.size();
+  std::size_t first = 0, last = n;
+  while (first < n && beyond_border[first]) ++first;
+  while (last > first && beyond_border[last - 1]) --last;
+  if (first == n) return;
+  for (std::size_t i = 0; i < first; ++i) radius[i] = radius[first];
+  for (std::size_t i = last; i < n; ++i) radius[i] = radius[last - 1];
 }
 
 }  // namespace
@@ -195,7 +221,13 @@ MaskTrace trace_vessel_mask(const VesselMaskSpec& spec) {
   smooth(path, kSmoothingPasses);
   trace.centreline = resample(path, spec.pixel_size);
   trace.radius.reserve(trace.centreline.size());
-  for (const Vec2& p : trace.centreline) trace.radius.push_back(radius_at(spec, dm, p));
+  std::vector<bool> beyond_border;
+  for (const Vec2& p : trace.centreline) {
+    const LumenRadius r = radius_at(spec, dm, p);
+    trace.radius.push_back(r.radius);
+    beyond_border.push_back(r.beyond_border);
+  }
+  extend_radius_past_border(trace.radius, beyond_border);
   return trace;
 }
 

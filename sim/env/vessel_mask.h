@@ -20,7 +20,9 @@ struct MaskTrace {
   std::vector<Polyline> outline;
   // m, from spec.start to spec.goal exactly, about one point per pixel, without pixel staircase.
   Polyline centreline;
-  std::vector<double> radius;  // m, lumen radius at each centreline point
+  // m, lumen radius at each centreline point; where the path starts or ends at the image's
+  // border, that of the vessel running out of the image there (not the distance to the border).
+  std::vector<double> radius;
 };
 
 // Uses spec.grey, width, height, pixel_size, threshold, start, goal; spec.file only in messages.
