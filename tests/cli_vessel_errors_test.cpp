@@ -67,6 +67,12 @@ const BadVessels kBad[] = {
     // Overlapping segments: the shortest route from A to C runs past C to B and back.
     {"shortest_route_folds", R"({"vessels": {"nodes": {"A": [0.1, 0.5], "B": [0.7, 0.5], "C": [0.4, 0.5]}, "segments": [{"from": "A", "to": "B", "radius": 0.03}, {"from": "B", "to": "C", "radius": 0.03}], "start": "A", "goal": "C"}})",
      "/vessels/goal: the shortest route from the start turns by 180 degrees at \"B\", back along the way it came"},
+    // A daughter leaving B at 5 degrees off straight back along its parent for 0.2 m, then bending
+    // away: its first leg lies inside the parent (the test took the segments' whole lengths, 0.5 m
+    // and 2.2 m, as the legs, and passed it).
+    {"route_folds_on_a_straight_leg", R"({"vessels": {"nodes": {"A": [0, 0], "B": [0.5, 0], "C": [0.300761, 2.0]}, "segments": [{"from": "A", "to": "B", "radius": 0.02},
+        {"from": "B", "to": "C", "via": [[0.300761, 0.017431]], "radius": 0.02}], "start": "A", "goal": "C"}})",
+     "/vessels/goal: the shortest route from the start turns by 175 degrees at \"B\", back along the way it came"},
     {"stenosis_outside", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.45, "length": 0.2}])") R"(], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/stenoses/0: the narrowing (at 0.45 m, length 0.2 m) must lie within the segment (0 to 0.5 m)"},
     {"neck_too_wide", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "aneurysms": [{"at": 0.2, "radius": 0.05, "neck": 0.12}])") R"(], "start": "a", "goal": "j"}})",

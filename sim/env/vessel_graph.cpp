@@ -114,15 +114,29 @@ Profile profile_of(const VesselSegmentSpec& seg, const Vec2& from, const Vec2& t
   return p;
 }
 
-// Whether the route folds back at the node between steps `came` and `goes` (folds_back,
-// with the segments' whole lengths as the legs and their ends' directions).
+// A segment's leg at one of its nodes: from that node to the farthest sample still on the line
+// of its first piece. Beyond it the segment bends away, so a fold at the node is a fold of these
+// straight legs (the segments' whole lengths made the test depend on how far they ran on after
+// bending away).
+Vec2 straight_leg(const std::vector<VesselSample>& samples, bool at_first) {
+  const auto at = [&](std::size_t k) { return samples[at_first ? k : samples.size() - 1 - k].point; };
+  const Vec2 node = at(0), direction = (at(1) - node).normalized();
+  std::size_t k = 1;
+  while (k + 1 < samples.size()) {
+    const Vec2 d = at(k + 1) - node;
+    if (std::abs(direction.x() * d.y() - direction.y() * d.x()) > 1e-9 * d.norm() || direction.dot(d) <= 0.0) break;
+    ++k;
+  }
+  return at(k) - node;
+}
+
+// Whether the route folds back at the node between steps `came` and `goes` (folds_back of the
+// two segments' straight legs there).
 bool route_folds_back(const VesselGraph& g, const RouteStep& came, const RouteStep& goes, Vec2& in, Vec2& out) {
-  const ResolvedSegment& a = g.segments[static_cast<std::size_t>(came.segment)];
-  const ResolvedSegment& b = g.segments[static_cast<std::size_t>(goes.segment)];
-  const auto& s = a.samples;
-  const auto& t = b.samples;
-  in = (came.forward ? s.back().point - s[s.size() - 2].point : s.front().point - s[1].point).normalized() * a.length;
-  out = (goes.forward ? t[1].point - t.front().point : t[t.size() - 2].point - t.back().point).normalized() * b.length;
+  const auto& s = g.segments[static_cast<std::size_t>(came.segment)].samples;
+  const auto& t = g.segments[static_cast<std::size_t>(goes.segment)].samples;
+  in = -straight_leg(s, !came.forward);
+  out = straight_leg(t, goes.forward);
   const double radius = std::max(came.forward ? s.back().radius : s.front().radius, goes.forward ? t.front().radius : t.back().radius);
   return folds_back(in, out, radius);
 }
