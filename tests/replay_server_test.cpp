@@ -222,6 +222,16 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
   ASSERT_TRUE(bad_bookmark);
   EXPECT_EQ(bad_bookmark->status, 400);
   EXPECT_EQ(json::parse(bad_bookmark->body)["parameter"], "name");
+  // Two different tokens: which was meant is a guess (the first was taken).
+  const auto twice = s.get(s.authorised("/api/run") + "&token=0123", false);
+  ASSERT_TRUE(twice);
+  EXPECT_EQ(twice->status, 400);
+  EXPECT_EQ(json::parse(twice->body).value("parameter", ""), "token") << twice->body;
+  // Parameters in a body where an endpoint takes none would be ignored: refused.
+  const auto form = s.client().Post(s.authorised("/api/export").c_str(), "width=321", "application/x-www-form-urlencoded");
+  ASSERT_TRUE(form);
+  EXPECT_EQ(form->status, 400) << form->body;
+  EXPECT_EQ(json::parse(form->body)["parameter"], "body");
 }
 
 TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
@@ -398,6 +408,21 @@ TEST(ReplayServer, BookmarksAreSavedAndAForeignFileIsLeftAlone) {
   EXPECT_EQ(kept["reviewer"], "A. N. Other");
   EXPECT_EQ(kept["bookmarks"][0]["colour"], "red");
   EXPECT_EQ(kept["bookmarks"][1]["name"], "exit");
+  // A posted bookmark keeps keys of its own (they were dropped), and JSON posted with a form's
+  // content type (curl -d's default) is read as JSON (it was refused as a parameter named after
+  // the whole body).
+  const auto tagged = s.client().Post(s.authorised("/api/bookmarks").c_str(), R"({"name": "tagged", "t": 0.2, "label": "review"})",
+                                      "application/x-www-form-urlencoded");
+  ASSERT_TRUE(tagged);
+  ASSERT_EQ(tagged->status, 200) << tagged->body;
+  EXPECT_EQ(json::parse(vascsim::test::read_text(run + "/bookmarks.json"))["bookmarks"][2]["label"], "review");
+  // A hand-edited entry the page could not show or seek to is named, and the file left alone.
+  const std::string edited = R"({"format": "vascsim-bookmarks/1", "bookmarks": [{"name": "a", "t": 1}, {"name": "b"}]})";
+  vascsim::test::write_text(run + "/bookmarks.json", edited);
+  const json named = get_json(s, "/api/bookmarks", 500);
+  EXPECT_NE(named.value("error", "").find("bookmarks.json: /bookmarks/1/t: expected a time in seconds"), std::string::npos) << named.dump();
+  EXPECT_EQ(s.post("/api/bookmarks", R"({"name": "x", "t": 1})")->status, 500);
+  EXPECT_EQ(vascsim::test::read_text(run + "/bookmarks.json"), edited);
 }
 
 // A run repeated into the served directory (`vascsim run --force` removes the log and writes a

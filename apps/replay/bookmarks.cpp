@@ -16,6 +16,7 @@ using nlohmann::json;
 
 namespace {
 constexpr std::size_t kMaxBookmarks = 10000;
+constexpr std::size_t kMaxBookmarkBytes = 64 * 1024;
 
 // 1..200 characters (UTF-8 code points, as the page's input counts them; the JSON reader has
 // checked the encoding), not all spaces, no control characters.
@@ -52,24 +53,55 @@ json load_bookmark_file(const std::string& path) {
   return doc;
 }
 
+// What is wrong with bookmark `b`, naming its field (empty if nothing). One rule for a posted
+// bookmark and for those a file holds: the page shows and seeks to what the file says.
+std::string bookmark_problem(const json& b, std::string& field) {
+  const auto wrong = [&field](const char* name, const char* expected) {
+    field = name;
+    return std::string(expected);
+  };
+  if (!b.is_object()) return wrong("", "expected a JSON object {\"name\", \"t\", \"view\"}");
+  if (!b.contains("name") || !b["name"].is_string() || !readable_name(b["name"].get<std::string>()))
+    return wrong("name", "expected a string of 1..200 characters, not only spaces, without control characters");
+  if (!b.contains("t") || !b["t"].is_number() || !(std::abs(b["t"].get<double>()) <= 1e12))
+    return wrong("t", "expected a time in seconds within [-1e12, 1e12], as /api/frame.png takes it");
+  if (b.contains("view") && (!b["view"].is_string() || b["view"].get<std::string>().size() > 4096))
+    return wrong("view", "expected a string of at most 4096 characters");
+  // Keys of the page's own or another tool's are kept, within reason for a file read whole.
+  if (b.dump().size() > kMaxBookmarkBytes) return wrong("", "expected a bookmark of at most 64 kB as JSON");
+  field.clear();
+  return "";
+}
+
+// The file's bookmarks, each checked: a hand-edited entry the page cannot show is named.
+json checked_bookmarks(const std::string& path, const json& doc) {
+  const json& list = doc["bookmarks"];
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    std::string field;
+    if (const std::string problem = bookmark_problem(list[k], field); !problem.empty())
+      throw InputError(path + ": /bookmarks/" + std::to_string(k) + (field.empty() ? "" : "/" + field) + ": " + problem +
+                       "; left untouched");
+  }
+  return list;
+}
+
 }  // namespace
 
-json load_bookmarks(const std::string& path) { return load_bookmark_file(path)["bookmarks"]; }
+json load_bookmarks(const std::string& path) { return checked_bookmarks(path, load_bookmark_file(path)); }
 
 json add_bookmark(const std::string& path, const json& b) {
-  if (!b.is_object()) throw ParamError("body", "expected a JSON object {\"name\", \"t\", \"view\"}");
-  if (!b.contains("name") || !b["name"].is_string() || !readable_name(b["name"].get<std::string>()))
-    throw ParamError("name", "expected a string of 1..200 characters, not only spaces, without control characters");
-  if (!b.contains("t") || !b["t"].is_number() || !(std::abs(b["t"].get<double>()) <= 1e12))
-    throw ParamError("t", "expected a time in seconds within [-1e12, 1e12], as /api/frame.png takes it");
-  if (b.contains("view") && (!b["view"].is_string() || b["view"].get<std::string>().size() > 4096))
-    throw ParamError("view", "expected a string of at most 4096 characters");
+  std::string field;
+  if (const std::string problem = bookmark_problem(b, field); !problem.empty())
+    throw ParamError(field.empty() ? "body" : field, problem);
   // Another server on this run may add one at the same moment: read, add and write in turn.
   const DirectoryLock lock(std::filesystem::path(path).parent_path().string());
   json doc = load_bookmark_file(path);
+  checked_bookmarks(path, doc);
   json& list = doc["bookmarks"];
   if (list.size() >= kMaxBookmarks) throw ParamError("name", "this run already has 10000 bookmarks");
-  list.push_back({{"name", b["name"]}, {"t", b["t"]}, {"view", b.value("view", "")}});
+  json entry = b;
+  entry["view"] = b.value("view", "");
+  list.push_back(std::move(entry));
   write_file_atomically(path, doc.dump(2) + "\n");
   return list;
 }

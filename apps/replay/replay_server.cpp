@@ -70,6 +70,27 @@ void send_error(httplib::Response& res, int status, const std::string& message, 
 }
 
 // The id a started export was given (POST /api/export): required, not defaulted.
+// Why the HTTP library refused a request before any handler saw it, for its error body.
+std::string library_refusal(int status) {
+  switch (status) {
+    case 404: return "no such endpoint";
+    case 413: return "the request body is larger than 1 MiB";
+    case 414: return "the request's URL is too long";
+    case 400: return "malformed HTTP request";
+    default: return "request refused (HTTP " + std::to_string(status) + ")";
+  }
+}
+
+// The URL's query parameters. The library also parses a form-encoded body into its parameters,
+// so JSON posted with curl -d's default content type became a "parameter" named after the whole
+// body; no endpoint takes form fields.
+std::multimap<std::string, std::string> query_of(const httplib::Request& req) {
+  std::multimap<std::string, std::string> query;
+  if (const auto mark = req.target.find('?'); mark != std::string::npos)
+    httplib::detail::parse_query_text(req.target.substr(mark + 1), query);
+  return query;
+}
+
 int export_id(const RequestParams& p) {
   if (!p.text("id")) throw ParamError("id", "required: the id that POST /api/export returned");
   return static_cast<int>(p.integer("id", 0, 1, 1 << 30));
@@ -123,7 +144,8 @@ struct ReplayServer::Impl {
     if (!options.require_token) {
       return !is_loopback(options.host) || loopback_request(req);
     }
-    if (req.has_param("token") && same_secret(req.get_param_value("token"), token)) return true;
+    const auto query = query_of(req);
+    if (const auto given = query.find("token"); given != query.end() && same_secret(given->second, token)) return true;
     const std::string cookies = req.get_header_value("Cookie");
     const std::string key = cookie_name() + "=";
     for (std::size_t at = cookies.find(key); at != std::string::npos; at = cookies.find(key, at + 1)) {
@@ -172,7 +194,7 @@ struct ReplayServer::Impl {
   }
 
   void frame(const httplib::Request& req, httplib::Response& res) {
-    const RequestParams p(req.params);
+    const RequestParams p(query_of(req));
     const render::View view = parse_view(p);
     std::vector<std::uint8_t> rgba;
     render::ViewFrameInfo info;
@@ -207,7 +229,7 @@ struct ReplayServer::Impl {
   }
 
   void run_info(const httplib::Request& req, httplib::Response& res) {
-    const RequestParams p(req.params);
+    const RequestParams p(query_of(req));
     std::lock_guard<std::mutex> lock(data_mutex);
     ReplayRun& run = run_of(p);
     run.refresh();
@@ -218,7 +240,7 @@ struct ReplayServer::Impl {
   }
 
   void nodes(const httplib::Request& req, httplib::Response& res) {
-    const RequestParams p(req.params);
+    const RequestParams p(query_of(req));
     std::lock_guard<std::mutex> lock(data_mutex);
     ReplayRun& run = run_of(p);
     run.refresh();
@@ -226,7 +248,7 @@ struct ReplayServer::Impl {
   }
 
   void series(const httplib::Request& req, httplib::Response& res) {
-    const RequestParams p(req.params);
+    const RequestParams p(query_of(req));
     std::lock_guard<std::mutex> lock(data_mutex);
     ReplayRun& run = run_of(p);
     run.refresh();
@@ -260,7 +282,7 @@ struct ReplayServer::Impl {
 
   // First and last frame of each wall-contact episode, the goal and a failure.
   void events(const httplib::Request& req, httplib::Response& res) {
-    const RequestParams p(req.params);
+    const RequestParams p(query_of(req));
     std::lock_guard<std::mutex> lock(data_mutex);
     ReplayRun& run = run_of(p);
     run.refresh();
@@ -297,7 +319,7 @@ struct ReplayServer::Impl {
   }
 
   void compare(const httplib::Request& req, httplib::Response& res) {
-    const RequestParams p(req.params);
+    const RequestParams p(query_of(req));
     std::lock_guard<std::mutex> lock(data_mutex);
     if (runs.size() < 2) throw ParamError("run", "compare needs two runs (vascsim replay RUN_A RUN_B)");
     const double t = time_of(p, current(0));
@@ -320,7 +342,7 @@ struct ReplayServer::Impl {
   void get_bookmarks(const httplib::Request& req, httplib::Response& res) { bookmarks(req, res, false); }
   void post_bookmark(const httplib::Request& req, httplib::Response& res) { bookmarks(req, res, true); }
   void bookmarks(const httplib::Request& req, httplib::Response& res, bool add) {
-    const RequestParams p(req.params);
+    const RequestParams p(query_of(req));
     std::lock_guard<std::mutex> lock(data_mutex);
     ReplayRun& run = run_of(p);
     json list;
@@ -340,7 +362,7 @@ struct ReplayServer::Impl {
   }
 
   void start_export(const httplib::Request& req, httplib::Response& res) {
-    const RequestParams p(req.params);
+    const RequestParams p(query_of(req));
     render::RenderOptions o;
     o.view = parse_view(p);
     if (o.view.width % 2 || o.view.height % 2)
@@ -374,14 +396,14 @@ struct ReplayServer::Impl {
   }
 
   void export_status(const httplib::Request& req, httplib::Response& res) {
-    const RequestParams p(req.params);
+    const RequestParams p(query_of(req));
     const auto s = exports.status(export_id(p));
     if (!s) throw ParamError("id", "no such export");
     send_json(res, *s);
   }
 
   void export_file(const httplib::Request& req, httplib::Response& res) {
-    const RequestParams p(req.params);
+    const RequestParams p(query_of(req));
     const auto path = exports.file(export_id(p));
     if (!path) throw ParamError("id", "no finished export with this id");
     // The file the export wrote, as it wrote it: not one deleted since, nor a link put in its place.
@@ -415,7 +437,7 @@ struct ReplayServer::Impl {
         const std::string marker = "{{TOKEN}}";
         for (std::size_t at = body.find(marker); at != std::string::npos; at = body.find(marker, at))
           body.replace(at, marker.size(), options.require_token ? token : "");
-        if (options.require_token && req.has_param("token"))
+        if (options.require_token && query_of(req).count("token"))
           res.set_header("Set-Cookie", cookie_name() + "=" + token + "; Path=/; HttpOnly; SameSite=Strict");
       }
       res.set_header("Cache-Control", "no-store");
@@ -428,16 +450,22 @@ struct ReplayServer::Impl {
   using Handler = void (Impl::*)(const httplib::Request&, httplib::Response&);
   // `takes`: the endpoint's parameters (besides token). Any other is refused before the handler
   // runs: a misspelt one (T=1 for t=1) would otherwise be ignored and its default used.
-  httplib::Server::Handler wrap(Handler handler, std::vector<std::string> takes) {
-    return [this, handler, takes](const httplib::Request& req, httplib::Response& res) {
+  // `takes_body`: the endpoint reads a JSON body; others refuse one rather than ignore it.
+  httplib::Server::Handler wrap(Handler handler, std::vector<std::string> takes, bool takes_body = false) {
+    return [this, handler, takes, takes_body](const httplib::Request& req, httplib::Response& res) {
       guarded(req, res, [&] {
         refuse_unknown_parameters(req, takes);
+        if (!takes_body && !req.body.empty())
+          throw ParamError("body", "this endpoint takes no body: give its parameters in the URL's query");
         (this->*handler)(req, res);
       });
     };
   }
   static void refuse_unknown_parameters(const httplib::Request& req, const std::vector<std::string>& takes) {
-    for (const auto& [name, value] : req.params) {
+    const auto query = query_of(req);
+    // Which token was meant is a guess (the first was taken): refused like any repeated parameter.
+    if (query.count("token") > 1) throw ParamError("token", "given more than once");
+    for (const auto& [name, value] : query) {
       if (name == "token" || std::find(takes.begin(), takes.end(), name) != takes.end()) continue;
       std::string list;
       for (const auto& t : takes) list += (list.empty() ? "" : ", ") + t;
@@ -484,7 +512,15 @@ struct ReplayServer::Impl {
       res.set_header("Content-Security-Policy",
                      "default-src 'self'; img-src 'self' blob: data:; style-src 'self' 'unsafe-inline'; "
                      "connect-src 'self'; media-src 'self' blob:; frame-ancestors 'none'");
-      if (authorised(req)) return httplib::Server::HandlerResponse::Unhandled;
+      if (authorised(req)) {
+        // The library would wait for a body until the connection closes or times out (10 s) and
+        // then answer only "bad request"; this runs before it reads one.
+        if (req.method == "POST" && !req.has_header("Content-Length") && !req.has_header("Transfer-Encoding")) {
+          send_error(res, 411, "a POST needs a Content-Length header (Content-Length: 0 for no body)");
+          return httplib::Server::HandlerResponse::Handled;
+        }
+        return httplib::Server::HandlerResponse::Unhandled;
+      }
       if (options.require_token)
         send_error(res, 403, "missing or wrong token: open the URL that vascsim replay printed", "token");
       else
@@ -509,7 +545,7 @@ struct ReplayServer::Impl {
     get("/api/events", wrap(&Impl::events, {"run"}));
     get("/api/compare", wrap(&Impl::compare, {"t"}));
     get("/api/bookmarks", wrap(&Impl::get_bookmarks, {"run"}));
-    post("/api/bookmarks", wrap(&Impl::post_bookmark, {"run"}));
+    post("/api/bookmarks", wrap(&Impl::post_bookmark, {"run"}, true));
     post("/api/export", wrap(&Impl::start_export, with(view, {"from", "to", "fps", "speed"})));
     get("/api/export/status", wrap(&Impl::export_status, {"id"}));
     get("/api/export/file", wrap(&Impl::export_file, {"id"}));
@@ -522,7 +558,7 @@ struct ReplayServer::Impl {
         send_error(res, 405, req.method + " is not allowed here; this path takes " + known->second);
         return;
       }
-      send_error(res, res.status, res.status == 404 ? "no such endpoint" : "bad request");
+      send_error(res, res.status, library_refusal(res.status));
     });
     http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
       send_error(res, 500, "internal error");

@@ -26,7 +26,9 @@ class ParamError : public std::runtime_error {
 
 class RequestParams {
  public:
-  explicit RequestParams(const std::multimap<std::string, std::string>& query) : query_(query) {}
+  // `query`: the URL's query parameters only (query_of in replay_server.cpp), not fields of a
+  // form-encoded body, which the HTTP library would mix in.
+  explicit RequestParams(std::multimap<std::string, std::string> query) : query_(std::move(query)) {}
 
   // The first value of `name`, if given; longer than 4096 characters is an error.
   std::optional<std::string> text(const std::string& name) const;
@@ -38,7 +40,7 @@ class RequestParams {
   std::string choice(const std::string& name, const std::string& fallback, const std::vector<std::string>& choices) const;
 
  private:
-  const std::multimap<std::string, std::string>& query_;
+  std::multimap<std::string, std::string> query_;
 };
 
 // Largest frame the server renders, px per side.
