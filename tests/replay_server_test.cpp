@@ -459,6 +459,22 @@ TEST(ReplayServer, ALogReplacedUnderTheServerIsOpenedAgain) {
   info = get_json(s, "/api/run");
   EXPECT_EQ(info["generation"], 2);
   EXPECT_LT(info["frames"].get<int>(), 101);
+
+  // Written over in place (the same file, as cp onto it does) by another run with more frames:
+  // neither the file nor the frame count says so, its header does (it was not noticed).
+  render::SyntheticLogSpec other = long_spec();
+  other.nodes = 30;
+  other.title = "another run";
+  render::write_synthetic_log(dir / "other.vlog", other);
+  {
+    const std::string bytes = vascsim::test::read_text(dir / "other.vlog");
+    std::fstream in_place(run + "/frames.vlog", std::ios::in | std::ios::out | std::ios::binary);
+    in_place.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  info = get_json(s, "/api/run");
+  EXPECT_EQ(info["generation"], 3);
+  EXPECT_EQ(info["frames"], 101);
+  EXPECT_EQ(info["node_count"], 30) << info.dump();
 }
 
 TEST(ReplayServer, ExportWritesANewMp4EachTime) {

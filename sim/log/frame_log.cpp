@@ -1,6 +1,7 @@
 #include "sim/log/frame_log.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -217,6 +218,9 @@ void FrameLogReader::read_header() {
   header_.metadata.assign(metadata_bytes, '\0');
   if (metadata_bytes) in.bytes(header_.metadata.data(), metadata_bytes);
   data_offset_ = (in.consumed() + 7) / 8 * 8;
+  header_bytes_.resize(in.consumed());
+  if (::pread(fileno(file_), header_bytes_.data(), header_bytes_.size(), 0) != static_cast<ssize_t>(header_bytes_.size()))
+    throw InputError(path + ": cannot read the frame log header");
 }
 
 FrameLogReader::~FrameLogReader() {
@@ -235,7 +239,11 @@ bool FrameLogReader::replaced() const {
   struct stat open_file {}, named {};
   if (::fstat(fileno(file_), &open_file) != 0) return false;
   if (::stat(path_.c_str(), &named) != 0) return true;  // removed, and not (yet) written again
-  return open_file.st_ino != named.st_ino || open_file.st_dev != named.st_dev;
+  if (open_file.st_ino != named.st_ino || open_file.st_dev != named.st_dev) return true;
+  // The same file written over in place (cp onto it) with another run: its header (the scene and
+  // channels) differs. A run of the same scene and seed writes the same bytes, so is no change.
+  std::vector<char> now(header_bytes_.size());
+  return ::pread(fileno(file_), now.data(), now.size(), 0) != static_cast<ssize_t>(now.size()) || now != header_bytes_;
 }
 
 void FrameLogReader::read(std::size_t i, std::vector<double>& record) const {

@@ -105,7 +105,8 @@ class FrameLogReader {
   // Complete frames in the file now; a growing log can be re-polled.
   std::size_t frame_count() const;
   // The path no longer names the file this reader opened: it was removed, or a new file took its
-  // name (a run repeated with --force into the same directory). The reader still reads the old.
+  // name (a run repeated with --force into the same directory), or the file was written over in
+  // place with another header (another scene). The reader keeps its file open.
   bool replaced() const;
   // Reads frame i (time first, then channels in order) into `record`.
   void read(std::size_t i, std::vector<double>& record) const;
@@ -126,6 +127,7 @@ class FrameLogReader {
   FrameLogHeader header_;
   std::FILE* file_ = nullptr;
   std::uint64_t data_offset_ = 0;
+  std::vector<char> header_bytes_;  // as read on opening, for replaced()
 };
 
 }  // namespace vascsim
