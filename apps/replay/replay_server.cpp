@@ -69,7 +69,6 @@ void send_error(httplib::Response& res, int status, const std::string& message, 
   send_json(res, body, status);
 }
 
-// The id a started export was given (POST /api/export): required, not defaulted.
 // Why the HTTP library refused a request before any handler saw it, for its error body.
 std::string library_refusal(int status) {
   switch (status) {
@@ -91,6 +90,7 @@ std::multimap<std::string, std::string> query_of(const httplib::Request& req) {
   return query;
 }
 
+// The id a started export was given (POST /api/export): required, not defaulted.
 int export_id(const RequestParams& p) {
   if (!p.text("id")) throw ParamError("id", "required: the id that POST /api/export returned");
   return static_cast<int>(p.integer("id", 0, 1, 1 << 30));

@@ -216,16 +216,16 @@ Environment graph_environment(const VesselsSpec& spec, double rod_length) {
 bool is_sliver(const Polyline& ring, double pixel_size) {
   double perimeter = 0.0;
   for (std::size_t k = 0; k < ring.size(); ++k) perimeter += (ring[(k + 1) % ring.size()] - ring[k]).norm();
-  return 2.0 * std::abs(lumen_area({ring})) < pixel_size * perimeter;  // mean thickness under a pixel
+  return 2.0 * std::abs(ring_area(ring)) < pixel_size * perimeter;  // mean thickness under a pixel
 }
 
 void check_mask_way_in(const Environment& env, const std::vector<Polyline>& outline, const WayIn& w, double pixel_size,
                        const std::string& image) {
   const double radius = env.centreline_radius.front();
-  const auto is_hole = [&](const Polyline& ring) { return lumen_area({ring}) < 0.0 && !is_sliver(ring, pixel_size); };
+  const auto is_hole = [&](const Polyline& ring) { return ring_area(ring) < 0.0 && !is_sliver(ring, pixel_size); };
   const auto count = [&](const std::vector<Polyline>& rings, bool holes) {
     return std::count_if(rings.begin(), rings.end(),
-                         [&](const Polyline& ring) { return holes ? is_hole(ring) : lumen_area({ring}) > 0.0; });
+                         [&](const Polyline& ring) { return holes ? is_hole(ring) : ring_area(ring) > 0.0; });
   };
   // Where along the way in the nearest of `rings` comes within the introducer (or -1).
   const auto nearest = [&](const std::vector<Polyline>& rings) {
@@ -237,7 +237,7 @@ void check_mask_way_in(const Environment& env, const std::vector<Polyline>& outl
   if (count(env.lumen, false) < count(outline, false)) {
     std::vector<Polyline> others;
     for (const Polyline& ring : outline)
-      if (lumen_area({ring}) > 0.0 && !inside_lumen({ring}, w.tip)) others.push_back(ring);
+      if (ring_area(ring) > 0.0 && !inside_lumen({ring}, w.tip)) others.push_back(ring);
     refuse_way_in(w, nearest(others), "comes within the introducer's radius of another vessel, which its lumen would join to the inlet,", image);
   }
   if (count(env.lumen, true) > count(outline, true)) {

@@ -153,14 +153,19 @@ bool inside_lumen(const std::vector<Polyline>& rings, const Vec2& p) {
   return inside;
 }
 
+double ring_area(const Polyline& ring) {
+  double area = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2& a = ring[i];
+    const Vec2& b = ring[(i + 1) % ring.size()];
+    area += 0.5 * (a.x() * b.y() - b.x() * a.y());
+  }
+  return area;
+}
+
 double lumen_area(const std::vector<Polyline>& rings) {
   double area = 0.0;
-  for (const auto& ring : rings)
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const Vec2& a = ring[i];
-      const Vec2& b = ring[(i + 1) % ring.size()];
-      area += 0.5 * (a.x() * b.y() - b.x() * a.y());
-    }
+  for (const auto& ring : rings) area += ring_area(ring);
   return area;
 }
 

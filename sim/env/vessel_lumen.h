@@ -35,5 +35,7 @@ bool inside_lumen(const std::vector<Polyline>& rings, const Vec2& p);
 
 // Area (m^2) of the even-odd interior, from the shoelace formula (holes count negative).
 double lumen_area(const std::vector<Polyline>& rings);
+// Signed area (m^2) of one ring: positive counter-clockwise (an outer boundary), negative clockwise.
+double ring_area(const Polyline& ring);
 
 }  // namespace vascsim
