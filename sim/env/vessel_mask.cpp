@@ -196,10 +196,12 @@ MaskTrace trace_vessel_mask(const VesselMaskSpec& spec) {
   // The minimal path with the step cost d^-4 (d in pixels, >= 1 on lumen): a pixel on the
   // vessel's axis costs (R / d)^4 times less than one beside the wall, so the path keeps to the
   // axis and cuts no bend (minimal paths on a potential, Deschamps & Cohen 2001, grid_path.h).
-  const DistanceMap dm = distance_to_background(lumen, spec.width, spec.height);
-  std::vector<double> cost(lumen.size(), 0.0);
-  for (std::size_t i = 0; i < cost.size(); ++i)
-    if (lumen[i]) cost[i] = std::pow(dm.distance[i], -kCostExponent);
+  // The cost takes the distances' place (and the lumen flags' memory is let go): at the largest
+  // image, 8192^2 px, each per-pixel double is half a gigabyte.
+  DistanceMap dm = distance_to_background(lumen, spec.width, spec.height);
+  std::vector<double> cost = std::move(dm.distance);
+  for (std::size_t i = 0; i < cost.size(); ++i) cost[i] = lumen[i] ? std::pow(cost[i], -kCostExponent) : 0.0;
+  std::vector<std::uint8_t>().swap(lumen);
   const std::vector<int> pixels = cheapest_grid_path(cost, spec.width, spec.height, start, goal);
   if (pixels.empty()) {
     std::ostringstream msg;
