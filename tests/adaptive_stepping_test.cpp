@@ -185,6 +185,34 @@ TEST(ErrorControl, AFloorBoundsTheStepAndCountsWhatItKeepsOverTheTolerance) {
   EXPECT_GT(floored.error, 10 * free.error);
 }
 
+// A step whose Newton fails is retried with half the step, but under error control never below
+// solver.dt_min (the retries took steps of 2.5e-4 s with dt_min 1e-3 s, then failed "at the
+// smallest step"): a cantilever under a tip load far past what a step of dt_min resolves.
+TEST(ErrorControl, NewtonRetriesDoNotGoBelowTheSmallestStep) {
+  Scene scene = test::cantilever(21);
+  scene.solver.mode = SolveMode::kDynamic;
+  scene.solver.adaptive = StepControl::kError;
+  scene.solver.dt = 4e-3;
+  scene.solver.dt_min = 1e-3;
+  scene.solver.dt_floor = 0.0;
+  scene.run.duration = 0.5;
+  scene.run.output_interval = 0.05;
+  PointLoadSpec load;
+  load.node = -1;
+  load.force = Vec2(0.0, -1e4);
+  scene.loads.point_loads.push_back(load);
+  vascsim::Run run(compile(scene));
+  struct : FrameSink {
+    void write(double, const std::vector<double>&) override {}
+  } sink;
+  ASSERT_FALSE(run.run(sink)) << "the load is far past what any step resolves";
+  const RunStatistics& stats = run.statistics();
+  if (stats.steps > 0) {
+    EXPECT_GE(stats.dt_min, 1e-3 * (1 - 1e-12));
+  }
+  EXPECT_NE(stats.failure.find("another would be shorter than solver.dt_min = 0.001 s"), std::string::npos) << stats.failure;
+}
+
 // A floor on the mean step (solver.dt_mean_min, the presets' bound on what rattling costs) lets
 // the steps go as short as the tolerance asks while the run has credit, then holds them at the
 // mean floor: the frames before the credit runs out are those of the run without a floor, and

@@ -92,6 +92,13 @@ TEST(SweepCli, ResumesSkippingCompletedRunsAndRerunsOnlyWhatIsMissing) {
   const CommandResult d = sweep_command(dir + "/out --quiet");
   EXPECT_EQ(d.exit_code, 0) << d.output;
   EXPECT_TRUE(has(d.output, "results.csv is from an earlier merge")) << d.output;
+  // results.csv deleted but results.json left: the merge it would refuse is not started (the
+  // sweep exited 2, "merging failed", after every run had completed).
+  fs::remove(dir + "/out/results.csv");
+  const CommandResult j = sweep_command(dir + "/out --quiet");
+  EXPECT_EQ(j.exit_code, 0) << j.output;
+  EXPECT_TRUE(has(j.output, "results.json is from an earlier merge")) << j.output;
+  EXPECT_FALSE(fs::exists(dir + "/out/results.csv"));
 }
 
 TEST(SweepCli, AFailedRunIsARowAndIsRetriedOnlyWhenAsked) {

@@ -141,6 +141,18 @@ std::string summary_table(const SweepManifest& m, const std::vector<RunOutcome>&
   return out;
 }
 
+std::vector<std::string> earlier_merge_outputs(const SweepDirectory& sweep) {
+  const fs::path dir(sweep.dir);
+  std::vector<std::string> outputs = {(dir / "results.csv").string(), (dir / "results.json").string()};
+  for (const auto& f : figure_paths(sweep.manifest, dir / "plots")) outputs.push_back(f);
+  std::vector<std::string> existing;
+  for (const auto& f : outputs) {
+    std::error_code ec;
+    if (fs::symlink_status(f, ec).type() != fs::file_type::not_found) existing.push_back(f);
+  }
+  return existing;
+}
+
 MergeReport merge_sweep(const SweepDirectory& sweep, bool force, bool plots) {
   const SweepManifest& m = sweep.manifest;
   const fs::path dir(sweep.dir);

@@ -24,6 +24,9 @@ struct MergeReport {
 
 // Refuses to replace results or plots that exist unless `force`. Throws InputError.
 MergeReport merge_sweep(const SweepDirectory& sweep, bool force, bool plots = true);
+// The files a merge writes (results.csv, results.json, the plots) that exist already: those a
+// merge without `force` would refuse to replace.
+std::vector<std::string> earlier_merge_outputs(const SweepDirectory& sweep);
 // The figures a table and the plots show: navigation figures when any run has them, else the
 // solver's counts (a sweep of free-space scenes).
 std::vector<std::size_t> headline_metrics(const std::vector<RunOutcome>& outcomes);

@@ -124,9 +124,11 @@ int merge_command(int argc, char** argv) {
 void merge_after_run(const sweep::SweepDirectory& dir, bool quiet) {
   for (std::size_t i = 0; i < dir.manifest.runs.size(); ++i)
     if (read_run_outcome(sweep::run_directory(dir, i)).status == "missing") return;
-  std::error_code ec;
-  if (fs::exists(fs::path(dir.dir) / "results.csv", ec)) {
-    std::printf("results.csv is from an earlier merge: vascsim sweep merge %s --force refreshes it\n", dir.dir.c_str());
+  // Any of them: results.json or a plot left alone (results.csv deleted) made the merge refuse,
+  // and the sweep exit 2 after every run had completed.
+  if (const auto earlier = sweep::earlier_merge_outputs(dir); !earlier.empty()) {
+    std::printf("%s is from an earlier merge: vascsim sweep merge %s --force refreshes the results\n",
+                earlier.front().c_str(), dir.dir.c_str());
     return;
   }
 #ifdef VASCSIM_RENDER_PROGRAM

@@ -178,15 +178,28 @@ StepReport step(const Model& model, State& state, Workspace& ws, const Controls&
                 const NewtonStopTolerance& stop, const NewtonWarmStart* warm) {
   StepReport report;
   const int retries = model.solver.adaptive == StepControl::kOff ? 0 : model.solver.max_halvings;
+  // Under error control no step is shorter than solver.dt_min, a halving included (one took steps
+  // of 2.5e-4 s with dt_min 1e-3 s).
+  const double shortest = model.solver.adaptive == StepControl::kError ? model.solver.dt_min * (1 - 1e-12) : 0.0;
   double h = dt;
-  for (int k = 0; k <= retries; ++k, h *= 0.5) {
+  int k = 0;
+  for (;; ++k, h *= 0.5) {
     if (attempt(model, state, ws, controls, h, stop, warm, report)) {
       report.ok = true;
       return report;
     }
-    if (k < retries) ++report.rejected;
+    if (k == retries || 0.5 * h < shortest) break;
+    ++report.rejected;
   }
-  if (retries > 0) report.failure += " (after " + std::to_string(retries) + " retries with halved dt)";
+  if (k > 0 || retries > 0) {
+    report.failure += " (after " + std::to_string(k) + " retries with halved dt";
+    if (k < retries) {
+      char text[96];
+      std::snprintf(text, sizeof text, "; another would be shorter than solver.dt_min = %.3g s", model.solver.dt_min);
+      report.failure += text;
+    }
+    report.failure += ")";
+  }
   return report;
 }
 
