@@ -96,33 +96,47 @@ void remove_run_outputs(const std::string& dir) {
                  name.c_str());
 }
 
-// Bytes from "10G", "500M", "2e9" (k, M, G: powers of 1000).
+// Bytes from "10G", "500M", "20000000": a whole number of bytes, or of k, M, G (powers of
+// 1000), which may have a fraction ("1.5G"). Not strtod's hexadecimal or exponents.
 double max_log_size(const Args& args) {
   const std::string text = args.value("max-log-size").value_or("10G");
-  char* end = nullptr;
-  double bytes = std::strtod(text.c_str(), &end);
-  const std::string suffix(end);
-  if (suffix == "k" || suffix == "K") bytes *= 1e3;
-  else if (suffix == "M") bytes *= 1e6;
-  else if (suffix == "G") bytes *= 1e9;
-  else if (!suffix.empty()) bytes = NAN;
-  if (!(bytes > 0) || !std::isfinite(bytes) || end == text.c_str())
-    throw UsageError("--max-log-size: expected a size in bytes such as 500M or 20G, got '" + text + "'");
+  std::size_t digits = text.find_first_not_of("0123456789.");
+  const std::string number = text.substr(0, digits), suffix = digits == std::string::npos ? "" : text.substr(digits);
+  const double scale = suffix.empty() ? 1 : suffix == "k" || suffix == "K" ? 1e3 : suffix == "M" ? 1e6 : suffix == "G" ? 1e9 : NAN;
+  const bool decimal = !number.empty() && number.find_first_of("0123456789") != std::string::npos &&
+                       std::count(number.begin(), number.end(), '.') <= (suffix.empty() ? 0 : 1);
+  const double bytes = decimal ? std::strtod(number.c_str(), nullptr) * scale : NAN;
+  if (!(bytes >= 1) || !std::isfinite(bytes) || bytes != std::floor(bytes))
+    throw UsageError("--max-log-size: expected a whole number of bytes, or of k, M or G (powers of 1000) such as 500M or "
+                     "1.5G, got '" + text + "'");
   return bytes;
 }
 
-// The frame log's size is known before the run: fixed-size records at the output interval.
-void check_log_size(const Scene& scene, const Run& run, double limit) {
-  double doubles = 1;
-  for (const auto& c : run.channels()) doubles += c.count;
+// A size for a message, in the unit that fits it, and in bytes (two sizes a byte apart differ).
+std::string size_text(double bytes) {
+  char text[64];
+  if (bytes < 1e3) std::snprintf(text, sizeof text, "%.0f bytes", bytes);
+  else if (bytes < 1e6) std::snprintf(text, sizeof text, "%.3g kB (%.0f bytes)", bytes / 1e3, bytes);
+  else if (bytes < 1e9) std::snprintf(text, sizeof text, "%.3g MB (%.0f bytes)", bytes / 1e6, bytes);
+  else std::snprintf(text, sizeof text, "%.3g GB (%.0f bytes)", bytes / 1e9, bytes);
+  return text;
+}
+
+// The frame log's size is known before the run: its header (channels, and the scene and walls
+// it carries) and fixed-size records at the output interval.
+void check_log_size(const Scene& scene, const FrameLogHeader& header, double limit) {
   const double frames = scene.solver.mode == SolveMode::kStatic ? 2 : std::floor(scene.run.duration / scene.run.output_interval) + 1;
-  const double bytes = frames * doubles * 8;
+  const double record = static_cast<double>(header.record_doubles()) * 8;
+  const double head = static_cast<double>(frame_log_header_bytes(header));
+  const double bytes = head + frames * record;
   if (bytes <= limit) return;
-  char message[320];
+  char message[512];
   std::snprintf(message, sizeof message,
-                "the frame log would take %.3g GB (%.0f frames of %.0f bytes: run.duration %g s / run.output_interval %g s), "
-                "more than --max-log-size %.3g GB: raise run.output_interval, shorten the run, or pass a larger --max-log-size",
-                bytes / 1e9, frames, doubles * 8, scene.run.duration, scene.run.output_interval, limit / 1e9);
+                "the frame log would take %s (a header of %s, and %.0f frames of %.0f bytes: run.duration %g s / "
+                "run.output_interval %g s), more than --max-log-size %s: raise run.output_interval, shorten the run, or "
+                "pass a larger --max-log-size",
+                size_text(bytes).c_str(), size_text(head).c_str(), frames, record, scene.run.duration,
+                scene.run.output_interval, size_text(limit).c_str());
   throw InputError((scene.file.empty() ? std::string("scene") : scene.file) + ": " + message);
 }
 
@@ -150,7 +164,8 @@ int run_run_command(int argc, char** argv) {
   Run run(compile(input));
   const Scene& scene = run.scene();  // as resolved: the duration a maze scene runs, the rod at the entry
   warn_unused_fields("run", input);
-  check_log_size(scene, run, max_log_size(args));
+  const FrameLogHeader log_header = run_log_header(run);
+  check_log_size(scene, log_header, max_log_size(args));
 
   // Refuse to mix a new run into a directory holding someone's files.
   std::error_code ec;
@@ -166,7 +181,7 @@ int run_run_command(int argc, char** argv) {
   remove_stale_temporaries(*out);  // a killed earlier run's summary.json under its temporary name
 
   const std::string log_path = (fs::path(*out) / "frames.vlog").string();
-  FrameLogWriter writer(log_path, run_log_header(run));
+  FrameLogWriter writer(log_path, log_header);
   FrameLogSink sink(writer);
   Progress progress(!args.flag("quiet"), scene.run.duration);
   const bool ok = run.run(sink, [&](double t) { progress.update(t); });

@@ -84,6 +84,12 @@ std::size_t FrameLogHeader::channel_offset(int index) const {
   return offset;
 }
 
+std::uint64_t frame_log_header_bytes(const FrameLogHeader& header) {
+  std::uint64_t bytes = sizeof kMagic + 3 * 4 + 4 + header.metadata.size();
+  for (const auto& c : header.channels) bytes += 4 + c.name.size() + 4 + c.unit.size() + 1 + 4;
+  return (bytes + 7) / 8 * 8;
+}
+
 FrameLogWriter::FrameLogWriter(const std::string& path, const FrameLogHeader& header)
     : path_(path), header_(header) {
   for (const auto& c : header_.channels) {
@@ -114,6 +120,7 @@ FrameLogWriter::FrameLogWriter(const std::string& path, const FrameLogHeader& he
     put_string(bytes, header_.metadata);
     // Records start 8-byte aligned so a reader may map the file and view them as doubles.
     while (bytes.size() % 8 != 0) bytes.push_back('\0');
+    if (bytes.size() != frame_log_header_bytes(header_)) throw std::logic_error("frame_log_header_bytes disagrees with the writer");
     if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size() || std::fflush(file_) != 0)
       throw InputError(path_ + ": cannot write frame log header (" + std::strerror(errno) + ")");
   } catch (...) {

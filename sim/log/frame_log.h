@@ -49,6 +49,10 @@ inline constexpr std::uint32_t kFrameLogVersion = 1;
 // while a reader's JSON of it stays far below a gigabyte.
 inline constexpr std::uint32_t kMaxMetadataBytes = 32u << 20;
 
+// Bytes of a log's header as written (records start after it, 8-byte aligned): a log of n frames
+// takes this plus n * record_doubles() * 8 bytes.
+std::uint64_t frame_log_header_bytes(const FrameLogHeader& header);
+
 // Streams frames to a file. Writes to `path`; the caller chooses whether that is a temporary name.
 class FrameLogWriter {
  public:
