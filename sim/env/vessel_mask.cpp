@@ -1,6 +1,7 @@
 #include "sim/env/vessel_mask.h"
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -144,21 +145,32 @@ LumenRadius radius_at(const VesselMaskSpec& spec, const DistanceMap& dm, const V
   return {std::max(best - 0.5 * spec.pixel_size, 0.5 * spec.pixel_size), beyond};
 }
 
-// Where the route starts or ends at the image's border, the border is the nearest "wall" of its
-// first (last) points, but the vessel runs on out of the image there (the introducer continues it
-// at the start): the lumen is as wide as where the vessel's own walls are nearest, so those
-// points take the radius of the first point that sees them. Otherwise a start on the last column
-// had a radius of half a pixel (refused as a narrowing, or an introducer far thinner than its
-// vessel) and a goal there could hardly be reached. A vessel lying along the border (no point
-// sees its own walls) keeps the border's distances.
-void extend_radius_past_border(std::vector<double>& radius, const std::vector<bool>& beyond_border) {
+// Where the route starts at the image's border, the border is the nearest "wall" of its first
+// points, but the vessel runs on out of the image there (the introducer continues it): those
+// points, and those the border still pulls off the axis, take the vessel's radius. Near the border the centre-seeking path also bends off the
+// vessel's axis (towards one wall, where the vessel leaves at a slant), so the vessel's radius is
+// the largest over the stretch from the last point that has the border nearest until both a
+// diameter further and a diameter from the border; the first point had half a pixel (refused as
+// a narrowing, or an introducer far thinner than its vessel), and the first point past the
+// border's reach 11 px for 20 at 75 degrees. A route whose every point has the border nearest (a
+// vessel lying along it) keeps those distances. Returns the index where that stretch ends (0 if
+// the route does not start at the border): from there on the path is on the vessel's axis.
+std::size_t extend_radius_past_border(const VesselMaskSpec& spec, const Polyline& path, std::vector<double>& radius,
+                                      const std::vector<bool>& beyond_border) {
   const std::size_t n = radius.size();
-  std::size_t first = 0, last = n;
+  std::size_t first = 0;
   while (first < n && beyond_border[first]) ++first;
-  while (last > first && beyond_border[last - 1]) --last;
-  if (first == n) return;
-  for (std::size_t i = 0; i < first; ++i) radius[i] = radius[first];
-  for (std::size_t i = last; i < n; ++i) radius[i] = radius[last - 1];
+  if (first == 0 || first == n) return 0;
+  const double w = spec.width * spec.pixel_size, h = spec.height * spec.pixel_size;
+  const auto border_distance = [&](const Vec2& p) { return std::min({p.x(), w - p.x(), p.y(), h - p.y()}); };
+  double largest = radius[first], along = 0.0;
+  std::size_t end = first;
+  while (end + 1 < n && (along < 2.0 * largest || border_distance(path[end]) < 2.0 * radius[end])) {
+    along += (path[end + 1] - path[end]).norm();
+    largest = std::max(largest, radius[++end]);
+  }
+  for (std::size_t i = 0; i < end; ++i) radius[i] = largest;
+  return end;
 }
 
 }  // namespace
@@ -229,7 +241,12 @@ MaskTrace trace_vessel_mask(const VesselMaskSpec& spec) {
     trace.radius.push_back(r.radius);
     beyond_border.push_back(r.beyond_border);
   }
-  extend_radius_past_border(trace.radius, beyond_border);
+  // At both ends: the goal may lie at the border too.
+  trace.clear_of_border = extend_radius_past_border(spec, trace.centreline, trace.radius, beyond_border);
+  Polyline reversed_path(trace.centreline.rbegin(), trace.centreline.rend());
+  std::vector<double> reversed_radius(trace.radius.rbegin(), trace.radius.rend());
+  extend_radius_past_border(spec, reversed_path, reversed_radius, std::vector<bool>(beyond_border.rbegin(), beyond_border.rend()));
+  trace.radius.assign(reversed_radius.rbegin(), reversed_radius.rend());
   return trace;
 }
 

@@ -23,6 +23,10 @@ struct MaskTrace {
   // m, lumen radius at each centreline point; where the path starts or ends at the image's
   // border, that of the vessel running out of the image there (not the distance to the border).
   std::vector<double> radius;
+  // The first centreline point one diameter past the last that has the image's border nearest,
+  // where the route starts at the border (0 if it does not): before it the path may bend off the
+  // vessel's axis.
+  std::size_t clear_of_border = 0;
 };
 
 // Uses spec.grey, width, height, pixel_size, threshold, start, goal; spec.file only in messages.
