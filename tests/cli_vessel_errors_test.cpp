@@ -73,6 +73,15 @@ const BadVessels kBad[] = {
     {"route_folds_on_a_straight_leg", R"({"vessels": {"nodes": {"A": [0, 0], "B": [0.5, 0], "C": [0.300761, 2.0]}, "segments": [{"from": "A", "to": "B", "radius": 0.02},
         {"from": "B", "to": "C", "via": [[0.300761, 0.017431]], "radius": 0.02}], "start": "A", "goal": "C"}})",
      "/vessels/goal: the shortest route from the start turns by 175 degrees at \"B\", back along the way it came"},
+    // A turn back at 179 degrees with a 1-degree kink 0.05 m before the node, or a 3-degree bend
+    // 0.05 m after it: the vessel still runs back inside its parent for 0.45 m (the legs were the
+    // straight pieces next to the node, 0.05 m: a jog, and passed; a QA pass found it).
+    {"route_folds_past_a_kink", R"({"vessels": {"nodes": {"a": [0, 0], "j": [1, 0], "c": [0.500076, 0.008726]}, "segments": [{"from": "a", "to": "j", "radius": 0.05, "via": [[0.95, -0.001]]},
+        {"from": "j", "to": "c", "radius": 0.05}], "start": "a", "goal": "c", "route": ["a", "j", "c"]}})",
+     "/vessels/route/2: the route turns by 177.854 degrees at \"j\""},
+    {"route_folds_before_a_bend", R"({"vessels": {"nodes": {"a": [0, 0], "j": [1, 0], "c": [0.501104, 0.032263]}, "segments": [{"from": "a", "to": "j", "radius": 0.05},
+        {"from": "j", "to": "c", "radius": 0.05, "via": [[0.950008, 0.000873]]}], "start": "a", "goal": "c", "route": ["a", "j", "c"]}})",
+     "/vessels/route/2: the route turns by 179 degrees at \"j\""},
     {"stenosis_outside", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "stenoses": [{"at": 0.45, "length": 0.2}])") R"(], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/stenoses/0: the narrowing (at 0.45 m, length 0.2 m) must lie within the segment (0 to 0.5 m)"},
     {"neck_too_wide", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE(R"(, "aneurysms": [{"at": 0.2, "radius": 0.05, "neck": 0.12}])") R"(], "start": "a", "goal": "j"}})",

@@ -46,6 +46,34 @@ bool folds_back(const Vec2& in, const Vec2& out, double radius) {
   return shorter >= 4.0 * radius && 2.0 * radius >= sin_between * shorter;
 }
 
+// A leg of a turn: `away` runs from the turn point away from it, along the vessel before or after
+// the turn. The leg goes on as long as the vessel stays within half a radius of its first piece's
+// line (a sub-degree kink does not end it: the vessel still lies in the other leg's tube), as a
+// vector along that piece as long as the leg. Beyond, the vessel bends away, so a fold is a fold of
+// these legs (a test with the whole segments as legs passed a daughter running back inside its
+// parent before bending away, and one with the first pieces alone a 1-degree kink near the node).
+Vec2 leg(const Polyline& away, double radius) {
+  const Vec2 turn = away[0], direction = (away[1] - away[0]).normalized();
+  const double tolerance = 0.5 * radius;
+  const auto off_line = [&](const Vec2& q) { const Vec2 d = q - turn; return std::abs(direction.x() * d.y() - direction.y() * d.x()); };
+  double length = 0.0;
+  for (std::size_t k = 1; k < away.size(); ++k) {
+    const double piece = (away[k] - away[k - 1]).norm();
+    const double before = off_line(away[k - 1]), after = off_line(away[k]);
+    if (after > tolerance || (away[k] - turn).dot(direction) <= 0.0) {
+      // Up to where it leaves the band (linear along the piece), then no further.
+      if (after > before) length += piece * std::clamp((tolerance - before) / (after - before), 0.0, 1.0);
+      break;
+    }
+    length += piece;
+  }
+  return length * direction;
+}
+
+// The points of a polyline from index k back to its start, and from k on to its end.
+Polyline behind_from(const Polyline& p, std::size_t k) { return Polyline(p.rend() - 1 - k, p.rend()); }
+Polyline ahead_from(const Polyline& p, std::size_t k) { return Polyline(p.begin() + k, p.end()); }
+
 double turn_degrees(const Vec2& in, const Vec2& out) {
   return std::atan2(std::abs(in.x() * out.y() - in.y() * out.x()), in.dot(out)) * 180.0 / kPi;
 }
@@ -104,7 +132,7 @@ Profile profile_of(const VesselSegmentSpec& seg, const Vec2& from, const Vec2& t
   for (std::size_t k = 0; k < seg.radius.size(); ++k)
     if (!(seg.radius[k] > 0.0) || !std::isfinite(seg.radius[k])) fail(rp + "/" + std::to_string(k), "a radius > 0 (m)", number(seg.radius[k]));
   for (std::size_t k = 1; k + 1 < p.points.size(); ++k) {
-    const Vec2 in = p.points[k] - p.points[k - 1], out = p.points[k + 1] - p.points[k];
+    const Vec2 in = -leg(behind_from(p.points, k), p.radius[k]), out = leg(ahead_from(p.points, k), p.radius[k]);
     if (folds_back(in, out, p.radius[k]))
       fail(segment_pointer(index) + "/via/" + std::to_string(k - 1),
            "the segment turns by " + number(turn_degrees(in, out)) + " degrees at [" + number(seg.via[k - 1].x()) + ", " +
@@ -114,30 +142,21 @@ Profile profile_of(const VesselSegmentSpec& seg, const Vec2& from, const Vec2& t
   return p;
 }
 
-// A segment's leg at one of its nodes: from that node to the farthest sample still on the line
-// of its first piece. Beyond it the segment bends away, so a fold at the node is a fold of these
-// straight legs (the segments' whole lengths made the test depend on how far they ran on after
-// bending away).
-Vec2 straight_leg(const std::vector<VesselSample>& samples, bool at_first) {
-  const auto at = [&](std::size_t k) { return samples[at_first ? k : samples.size() - 1 - k].point; };
-  const Vec2 node = at(0), direction = (at(1) - node).normalized();
-  std::size_t k = 1;
-  while (k + 1 < samples.size()) {
-    const Vec2 d = at(k + 1) - node;
-    if (std::abs(direction.x() * d.y() - direction.y() * d.x()) > 1e-9 * d.norm() || direction.dot(d) <= 0.0) break;
-    ++k;
-  }
-  return at(k) - node;
+Polyline points_of(const std::vector<VesselSample>& samples) {
+  Polyline p;
+  for (const auto& v : samples) p.push_back(v.point);
+  return p;
 }
 
 // Whether the route folds back at the node between steps `came` and `goes` (folds_back of the
-// two segments' straight legs there).
+// two segments' legs there).
 bool route_folds_back(const VesselGraph& g, const RouteStep& came, const RouteStep& goes, Vec2& in, Vec2& out) {
   const auto& s = g.segments[static_cast<std::size_t>(came.segment)].samples;
   const auto& t = g.segments[static_cast<std::size_t>(goes.segment)].samples;
-  in = -straight_leg(s, !came.forward);
-  out = straight_leg(t, goes.forward);
   const double radius = std::max(came.forward ? s.back().radius : s.front().radius, goes.forward ? t.front().radius : t.back().radius);
+  const Polyline incoming = points_of(s), outgoing = points_of(t);
+  in = -leg(came.forward ? behind_from(incoming, incoming.size() - 1) : ahead_from(incoming, 0), radius);
+  out = leg(goes.forward ? ahead_from(outgoing, 0) : behind_from(outgoing, outgoing.size() - 1), radius);
   return folds_back(in, out, radius);
 }
 
