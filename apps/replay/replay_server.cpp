@@ -34,6 +34,8 @@ using nlohmann::json;
 
 namespace {
 
+constexpr long long kMaxBodyBytes = 1 << 20;  // bookmark bodies are small
+
 // The run's log was replaced and the new one cannot be opened yet (HTTP 409).
 class RunReplaced : public InputError {
  public:
@@ -73,11 +75,45 @@ void send_error(httplib::Response& res, int status, const std::string& message, 
 std::string library_refusal(int status) {
   switch (status) {
     case 404: return "no such endpoint";
-    case 413: return "the request body is larger than 1 MiB";
+    case 413: return "the request body is too large: at most 1 MiB, or 8 kB form-encoded (what curl -d sends: give "
+                     "-H 'Content-Type: application/json' for more)";
     case 414: return "the request's URL is too long";
     case 400: return "malformed HTTP request";
     default: return "request refused (HTTP " + std::to_string(status) + ")";
   }
+}
+
+// What is wrong with how a request frames its body, checked from its headers before the library
+// reads the body (empty if nothing), with the status to answer in `status`. The library would
+// wait for a POST's body without a length until the connection closes or times out (10 s) and
+// then answer "bad request"; it read a GET's body as the next request; it took the first of two
+// Content-Lengths; it read "abc" as an empty body; and a body over the limit it first waited for.
+std::string body_framing_problem(const httplib::Request& req, int& status) {
+  status = 400;
+  const bool chunked = req.has_header("Transfer-Encoding");
+  const std::size_t lengths = req.get_header_value_count("Content-Length");
+  std::string length;
+  for (std::size_t k = 0; k < lengths; ++k) {
+    const std::string value = req.get_header_value("Content-Length", k);
+    if (value.empty() || value.size() > 18 || value.find_first_not_of("0123456789") != std::string::npos)
+      return "Content-Length: expected a number of bytes, got '" + value.substr(0, 40) + "'";
+    if (k > 0 && value != length) return "two different Content-Length headers";
+    length = value;
+  }
+  const bool has_body = chunked || (!length.empty() && std::stoll(length) > 0);
+  if (req.method != "POST") {
+    if (has_body) return req.method + " takes no body";
+    return "";
+  }
+  if (length.empty() && !chunked) {
+    status = 411;
+    return "a POST needs a Content-Length header (Content-Length: 0 for no body)";
+  }
+  if (!length.empty() && std::stoll(length) > kMaxBodyBytes) {
+    status = 413;
+    return "the request body is larger than 1 MiB";
+  }
+  return "";
 }
 
 // The URL's query parameters. The library also parses a form-encoded body into its parameters,
@@ -144,8 +180,11 @@ struct ReplayServer::Impl {
     if (!options.require_token) {
       return !is_loopback(options.host) || loopback_request(req);
     }
+    // Every token the URL gives must be the right one (a wrong one beside it is not ignored).
     const auto query = query_of(req);
-    if (const auto given = query.find("token"); given != query.end() && same_secret(given->second, token)) return true;
+    const auto [first, last] = query.equal_range("token");
+    if (first != last)
+      return std::all_of(first, last, [&](const auto& given) { return same_secret(given.second, token); });
     const std::string cookies = req.get_header_value("Cookie");
     const std::string key = cookie_name() + "=";
     for (std::size_t at = cookies.find(key); at != std::string::npos; at = cookies.find(key, at + 1)) {
@@ -168,7 +207,8 @@ struct ReplayServer::Impl {
     } catch (const InputError& e) {
       throw RunReplaced("run " + run.id() + ": " + run.source().log_path() +
                         " was replaced since the server opened it (a new run in its directory?) and cannot be read yet (" +
-                        e.what() + "); try again when the new run has written a frame");
+                        e.what() + "); it is opened again on the first request that finds it readable (a new run "
+                        "has written a frame, and its summary.json if it has one)");
     }
     return *runs[k];
   }
@@ -463,8 +503,6 @@ struct ReplayServer::Impl {
   }
   static void refuse_unknown_parameters(const httplib::Request& req, const std::vector<std::string>& takes) {
     const auto query = query_of(req);
-    // Which token was meant is a guess (the first was taken): refused like any repeated parameter.
-    if (query.count("token") > 1) throw ParamError("token", "given more than once");
     for (const auto& [name, value] : query) {
       if (name == "token" || std::find(takes.begin(), takes.end(), name) != takes.end()) continue;
       std::string list;
@@ -513,10 +551,9 @@ struct ReplayServer::Impl {
                      "default-src 'self'; img-src 'self' blob: data:; style-src 'self' 'unsafe-inline'; "
                      "connect-src 'self'; media-src 'self' blob:; frame-ancestors 'none'");
       if (authorised(req)) {
-        // The library would wait for a body until the connection closes or times out (10 s) and
-        // then answer only "bad request"; this runs before it reads one.
-        if (req.method == "POST" && !req.has_header("Content-Length") && !req.has_header("Transfer-Encoding")) {
-          send_error(res, 411, "a POST needs a Content-Length header (Content-Length: 0 for no body)");
+        int status = 0;
+        if (const std::string problem = body_framing_problem(req, status); !problem.empty()) {
+          send_error(res, status, problem, status == 400 ? "body" : "");
           return httplib::Server::HandlerResponse::Handled;
         }
         return httplib::Server::HandlerResponse::Unhandled;
@@ -563,7 +600,7 @@ struct ReplayServer::Impl {
     http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
       send_error(res, 500, "internal error");
     });
-    http.set_payload_max_length(1 << 20);  // bookmark bodies are small
+    http.set_payload_max_length(kMaxBodyBytes);
     http.set_read_timeout(10);
     http.set_keep_alive_max_count(1000);
     // A browser keeps up to 6 idle keep-alive connections per tab, each holding a worker until it

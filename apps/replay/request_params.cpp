@@ -1,5 +1,6 @@
 #include "apps/replay/request_params.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,8 +22,11 @@ std::string quoted(const std::string& value) {
 std::optional<std::string> RequestParams::text(const std::string& name) const {
   const auto it = query_.find(name);
   if (it == query_.end()) return std::nullopt;
-  // Which of two values was meant is a guess; a page or script that builds the URL can say.
-  if (query_.count(name) > 1) throw ParamError(name, "given more than once");
+  // Which of two values was meant is a guess; a page or script that builds the URL can say. The
+  // same value twice (written differently: a and %61) is no question.
+  const auto [first, last] = query_.equal_range(name);
+  if (std::any_of(first, last, [&](const auto& other) { return other.second != it->second; }))
+    throw ParamError(name, "given more than once with different values");
   if (it->second.size() > 4096) throw ParamError(name, "longer than 4096 characters");
   return it->second;
 }
