@@ -21,6 +21,8 @@ const BadScene kBadScenes[] = {
     {"cols_string", R"({"maze": {"cols": "five"}})", "/maze/cols: expected an integer in [1, 200], got \"five\""},
     {"unknown_top", R"({"mazes": {}})", "/mazes: unknown key"},
     {"unknown_nested", R"({"rod": {"nodes": 10, "lenght": 0.5}})", "/rod/lenght: unknown key"},
+    // A key with '~' or '/' is one reference token of the pointer (RFC 6901): it was written as is.
+    {"unknown_odd_key", R"({"rod": {"~odd/key": 1}})", "/rod/~0odd~1key: unknown key"},
     {"lumen_too_wide", R"({"maze": {"lumen_width": 0.3}})", "/maze/lumen_width: expected a number in [1e-06, 0.2], got 0.3"},
     {"negative_width", R"({"maze": {"width": -1}})", "/maze/width: expected a number in [0.001, 1000], got -1"},
     {"rod_nodes", R"({"rod": {"nodes": 1}})", "/rod/nodes: expected an integer in [3, 1000000], got 1"},

@@ -275,6 +275,21 @@ TEST(SweepCli, EmitsGnuParallelAndSlurmFiles) {
   EXPECT_EQ(injected.exit_code, 2) << injected.output;
   EXPECT_TRUE(has(injected.output, "--partition: expected partition names")) << injected.output;
   EXPECT_FALSE(fs::exists(dir + "/injected")) << "a refused emit made the sweep directory";
+  // --time as sbatch reads it (UNLIMITED and -1 included), not any run of digits, ':' and '-';
+  // an option of another way of running is refused, not ignored.
+  for (const char* time : {"1-", "1:2:3:4", "--5", "soon"}) {
+    const CommandResult t = sweep_command(sweep + " --out " + dir + "/timed --emit slurm --time '" + time + "'");
+    EXPECT_EQ(t.exit_code, 2) << time << ": " << t.output;
+    EXPECT_TRUE(has(t.output, "--time: expected a Slurm time")) << time << ": " << t.output;
+  }
+  EXPECT_EQ(sweep_command(sweep + " --out " + dir + "/timed --emit slurm --time ''").exit_code, 2);
+  EXPECT_EQ(sweep_command(sweep + " --out " + dir + "/unlimited --emit slurm --time UNLIMITED").exit_code, 0);
+  const CommandResult jobs = sweep_command(sweep + " --out " + dir + "/jobs --emit slurm --jobs 3");
+  EXPECT_EQ(jobs.exit_code, 2) << jobs.output;
+  EXPECT_TRUE(has(jobs.output, "--jobs goes with a local run or --emit gnu-parallel, not with --emit slurm")) << jobs.output;
+  const CommandResult partition = sweep_command(sweep + " --out " + dir + "/partition --emit gnu-parallel --partition x");
+  EXPECT_EQ(partition.exit_code, 2) << partition.output;
+  EXPECT_FALSE(fs::exists(dir + "/jobs")) << "a refused emit made the sweep directory";
   // A name with a space is one word in #SBATCH --job-name.
   const std::string spaced = write_maze_sweep(dir, "spaced", kAxes, 0.3, R"(, "name": "kp sweep")");
   ASSERT_EQ(sweep_command(spaced + " --out " + dir + "/spaced --emit slurm").exit_code, 0);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <string>
 
 #include "apps/sweep/run_process.h"
 #include "sim/io/output_file.h"
@@ -95,10 +96,33 @@ std::vector<std::string> emit_gnu_parallel(const SweepDirectory& sweep, const Pa
   return {script, jobs};
 }
 
+namespace {
+// Up to three ':'-separated numbers, after an optional "days-"; or no limit.
+bool is_slurm_time(const std::string& t) {
+  if (t == "UNLIMITED" || t == "INFINITE" || t == "-1") return true;
+  const std::size_t dash = t.find('-');
+  const std::string days = dash == std::string::npos ? "0" : t.substr(0, dash), rest = t.substr(dash == std::string::npos ? 0 : dash + 1);
+  const auto number = [](const std::string& n) { return !n.empty() && n.find_first_not_of("0123456789") == std::string::npos; };
+  if (!number(days)) return false;
+  int fields = 0;
+  for (std::size_t from = 0;; ++fields) {
+    const std::size_t colon = rest.find(':', from);
+    if (!number(rest.substr(from, colon == std::string::npos ? std::string::npos : colon - from))) return false;
+    if (colon == std::string::npos) break;
+    from = colon + 1;
+  }
+  return fields <= 2;
+}
+}  // namespace
+
 void check_slurm_options(const SlurmOptions& options, const std::string& sweep_dir) {
   check_slurm_option("partition", options.partition, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.,",
                      "partition names (letters, digits, '_', '-', '.', separated by ',')");
-  check_slurm_option("time", options.time_limit, "0123456789:-", "a Slurm time such as 30, 0:30:00 or 1-12:00:00");
+  // sbatch's forms: minutes, minutes:seconds, hours:minutes:seconds, days-hours,
+  // days-hours:minutes, days-hours:minutes:seconds, and no limit (UNLIMITED, INFINITE or -1).
+  if (!options.time_limit.empty() && !is_slurm_time(options.time_limit))
+    throw InputError("--time: expected a Slurm time such as 30, 0:30:00, 1-12:00:00 or UNLIMITED, got '" +
+                     options.time_limit.substr(0, 40) + "'");
   check_slurm_path(absolute_path(sweep_dir));
   check_slurm_path(vascsim_executable());
 }

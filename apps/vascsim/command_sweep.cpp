@@ -1,5 +1,6 @@
 // vascsim sweep: parameter sweeps (docs/sweeps.md). Parses the options and hands over to
 // apps/sweep: the sweep directory, the local runner, the files for external engines, the merge.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -164,6 +165,19 @@ int run_sweep_command(int argc, char** argv) {
     throw UsageError("--emit: expected gnu-parallel or slurm, got '" + *emit + "'");
   if (args.value("run-index") && (emit || args.value("shard")))
     throw UsageError("--run-index runs one entry; it does not go with --emit or --shard");
+  // An option of another way of running would be ignored: refused, naming what it belongs to.
+  const std::string mode = args.value("run-index") ? "--run-index" : emit ? "--emit " + *emit : "a local run";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> belongs = {
+      {"jobs", {"a local run", "--emit gnu-parallel"}},  {"exec", {"a local run"}},
+      {"sshloginfile", {"--emit gnu-parallel"}},           {"max-parallel", {"--emit slurm"}},
+      {"partition", {"--emit slurm"}},                     {"time", {"--emit slurm"}},
+      {"shard", {"a local run"}},                          {"no-merge", {"a local run"}}};
+  for (const auto& [option, modes] : belongs) {
+    if (!args.flag(option) || std::find(modes.begin(), modes.end(), mode) != modes.end()) continue;
+    std::string list;
+    for (const auto& m : modes) list += (list.empty() ? "" : " or ") + m;
+    throw UsageError("--" + option + " goes with " + list + ", not with " + mode);
+  }
 
   // Engine options are checked before a sweep directory is made, so a refusal writes nothing.
   sweep::SlurmOptions slurm;
@@ -171,6 +185,7 @@ int run_sweep_command(int argc, char** argv) {
     slurm.max_parallel = static_cast<int>(args.integer("max-parallel", 0, 0, 100000));
     slurm.partition = args.value("partition").value_or("");
     slurm.time_limit = args.value("time").value_or("");
+    if (args.value("time") && slurm.time_limit.empty()) throw UsageError("--time: expected a Slurm time such as 0:30:00, got ''");
     slurm.retry_failed = args.flag("retry-failed");
     sweep::check_slurm_options(slurm, args.value("out").value_or(input));
   }

@@ -229,7 +229,7 @@ void FieldReader::finish() const {
     if (known_.count(it.key())) continue;
     std::string keys;
     for (const auto& k : known_) keys += (keys.empty() ? "" : ", ") + k;
-    throw InputError(file_ + ": " + pointer_of(it.key()) + ": unknown key (known keys here: " + keys + ")");
+    throw InputError(file_ + ": " + pointer_ + "/" + escape_pointer_token(it.key()) + ": unknown key (known keys here: " + keys + ")");
   }
 }
 
