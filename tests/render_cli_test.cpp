@@ -245,6 +245,15 @@ TEST(DiffCli, DamagedPngsAndSizeMismatchesNameTheFile) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find(dir / "a.png"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(dir / "wide.png"), std::string::npos) << r.err;
+  // Sizes are compared from the headers before either image is decoded (a small file can decode
+  // to gigabytes): a file claiming 40000 x 40000 px with no pixel data is a size mismatch, not
+  // decoded first.
+  std::string huge = good.substr(0, 24);
+  for (const int at : {16, 20}) huge[at] = 0, huge[at + 1] = 0, huge[at + 2] = char(0x9c), huge[at + 3] = 0x40;
+  std::ofstream(dir / "huge.png", std::ios::binary) << huge;
+  const auto bomb = run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "huge.png") + "'", dir);
+  EXPECT_EQ(bomb.exit_code, 2);
+  EXPECT_NE(bomb.err.find("is 40000x40000: images of different sizes cannot be compared"), std::string::npos) << bomb.err;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
+#include "sim/io/png_file.h"
 #include "render/image_diff.h"
 #include "sim/io/output_file.h"
 #include "sim/scene/input_error.h"
@@ -41,12 +42,17 @@ int run_diff_command(int argc, char** argv) {
   const long max_pixels = static_cast<long>(args.integer("max-pixels", 0, 0, 1LL << 40));
   const auto out = args.value("out");
   if (out) check_replaceable_output(*out, args.flag("force"), args.positional());
+  const auto different_sizes = [&](std::pair<int, int> a, std::pair<int, int> b) {
+    return InputError(args.positional()[0] + " is " + std::to_string(a.first) + "x" + std::to_string(a.second) + ", " +
+                      args.positional()[1] + " is " + std::to_string(b.first) + "x" + std::to_string(b.second) +
+                      ": images of different sizes cannot be compared");
+  };
+  // From the headers first: a small file can decode to gigabytes.
+  const auto size_a = io::png_dimensions(args.positional()[0]), size_b = io::png_dimensions(args.positional()[1]);
+  if (size_a.first > 0 && size_b.first > 0 && size_a != size_b) throw different_sizes(size_a, size_b);
   const render::Image a = render::load_png(args.positional()[0]);
   const render::Image b = render::load_png(args.positional()[1]);
-  if (a.width != b.width || a.height != b.height)
-    throw InputError(args.positional()[0] + " is " + std::to_string(a.width) + "x" + std::to_string(a.height) + ", " +
-                     args.positional()[1] + " is " + std::to_string(b.width) + "x" + std::to_string(b.height) +
-                     ": images of different sizes cannot be compared");
+  if (a.width != b.width || a.height != b.height) throw different_sizes({a.width, a.height}, {b.width, b.height});
   render::Image heat;
   const render::DiffStats s = render::diff_images(a, b, tolerance, out ? &heat : nullptr);
   if (out) render::write_image_png(*out, heat);

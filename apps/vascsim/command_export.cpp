@@ -46,7 +46,7 @@ int run_export_command(int argc, char** argv) {
     print_usage();
     return 0;
   }
-  if (args.positional().size() != 1) throw UsageError("expected one RUN_DIR (see vascsim export --help)");
+  if (args.positional().size() != 1) throw UsageError("expected one RUN_DIR");
   const auto dir = args.value("csv");
   if (!dir) throw UsageError("--csv DIR is required");
   CsvExportOptions options;

@@ -134,6 +134,21 @@ std::string refuse_indices_past_the_palette(const std::string& bytes, const Pale
 
 }  // namespace
 
+std::pair<int, int> png_dimensions(const std::string& path) {
+  unsigned char head[24] = {};
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(head), sizeof head)) return {0, 0};
+  static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (std::memcmp(head, signature, 8) != 0 || std::memcmp(head + 12, "IHDR", 4) != 0) return {0, 0};
+  const auto big_endian = [&](int at) {
+    return static_cast<std::uint32_t>(head[at]) << 24 | static_cast<std::uint32_t>(head[at + 1]) << 16 |
+           static_cast<std::uint32_t>(head[at + 2]) << 8 | head[at + 3];
+  };
+  const std::uint32_t w = big_endian(16), h = big_endian(20);
+  if (w == 0 || h == 0 || w > 0x7fffffffu || h > 0x7fffffffu) return {0, 0};
+  return {static_cast<int>(w), static_cast<int>(h)};
+}
+
 PngPixels read_png(const std::string& path, int channels, int max_side) {
   return decode_png(read_png_bytes(path), path, channels, max_side);
 }

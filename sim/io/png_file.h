@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vascsim::io {
@@ -31,6 +32,11 @@ PngPixels read_png(const std::string& path, int channels, int max_side = 0);
 // read_png's checks and decoding of a file's bytes already in memory (`label` names them in
 // errors); read_png is this after reading the file. The fuzz harness (tests/fuzz) calls it.
 PngPixels decode_png(const std::string& bytes, const std::string& label, int channels, int max_side = 0);
+
+// Width and height (px) from a PNG file's header (its first 24 bytes), without decoding it; {0, 0}
+// if the file does not start like a PNG (read_png then says what is wrong). vascsim diff compares
+// two images' sizes before decoding either: a small file can decode to gigabytes.
+std::pair<int, int> png_dimensions(const std::string& path);
 
 // An 8-bit grey image: 0 black .. 255 white.
 struct GreyImage {
