@@ -90,6 +90,9 @@ TEST(SweepSpec, RangesGiveIntegersStepsCountsAndLogScales) {
   // Between integer bounds, values on integers are integers: an integer field takes them.
   EXPECT_EQ(values(R"({"from": 0, "to": 1, "count": 3})"), (std::vector<std::string>{"0", "0.5", "1"}));
   EXPECT_EQ(values(R"({"from": 5, "to": 9, "count": 3})"), (std::vector<std::string>{"5", "7", "9"}));
+  // And with a step, whatever it is written as (1.0 gave 1.0, 2.0, 3.0, refused by /maze/seed).
+  EXPECT_EQ(values(R"({"from": 1, "to": 3, "step": 1.0})"), (std::vector<std::string>{"1", "2", "3"}));
+  EXPECT_EQ(values(R"({"from": 1, "to": 2, "step": 0.5})"), (std::vector<std::string>{"1", "1.5", "2"}));
   EXPECT_EQ(values(R"({"from": 10, "to": 1000, "count": 3, "scale": "log"})"), (std::vector<std::string>{"10", "100", "1000"}));
   EXPECT_EQ(values(R"({"from": 0.0, "to": 1.0, "count": 3})"), (std::vector<std::string>{"0.0", "0.5", "1.0"}));
   EXPECT_EQ(values(R"({"from": 0.001, "to": 0.1, "count": 3, "scale": "log"})"),

@@ -85,11 +85,16 @@ std::vector<std::string> read_range(const json& range, const std::string& label,
     in.fail(in.has("step") ? "step" : "to", "at most " + std::to_string(max_count) + " values in the range",
             in.has("step") ? range["step"] : range["to"]);
   const long long count = static_cast<long long>(std::floor(span + 1e-9)) + 1;
+  // As for "count": between integer bounds a value on an integer is one, whatever the step is
+  // written as (1 to 3 step 1.0 gave 1.0, 2.0, 3.0, which /maze/seed refuses).
+  const bool integer_bounds = exact_integer("from") && exact_integer("to");
   for (long long i = 0; i < count; ++i) {
-    if (integers)
+    if (integers) {
       values.push_back(json(range["from"].get<long long>() + i * range.value("step", json(1)).get<long long>()).dump());
-    else
-      values.push_back(json(round12(from + static_cast<double>(i) * step)).dump());
+    } else {
+      const double x = round12(from + static_cast<double>(i) * step);
+      values.push_back(integer_bounds && x == std::round(x) ? json(static_cast<long long>(x)).dump() : json(x).dump());
+    }
   }
   in.finish();
   return values;
