@@ -138,7 +138,7 @@ const BadVessels kBadMasks[] = {
      "/vessels/start: the rod's way in (straight back from the start along the inlet for the rod's length and two inlet radii, 0.660294 m) comes within the introducer's radius of another vessel, which its lumen would join to the inlet, at (1.24"},
     // The same vessel, looping round from the tube's far end to beside the way in.
     {"mask_way_in_beside_its_own_vessel", MASK("tube_loop.png", "[1.1, 0.3]", "[0.3, 0.3]"),
-     "/vessels/start: the rod's way in (straight back from the start along the inlet for the rod's length and two inlet radii, 0.660294 m) comes within the introducer's radius of its own vessel further on, which its lumen would join into a loop, at (1.2"},
+     "/vessels/start: the rod's way in (straight back from the start along the inlet for the rod's length and two inlet radii, 0.660294 m) comes within the introducer's radius of its own vessel elsewhere, which its lumen would join into a loop, at (1.2"},
     {"mask_start_outside", MASK("two_discs.png", "[0.01, 0.01]", "[0.3, 0.3]"), "/vessels/start: "},
     {"mask_goal_outside", MASK("two_discs.png", "[0.3, 0.3]", "[0.01, 0.01]"), "/vessels/goal: "},
     {"mask_not_connected", MASK("two_discs.png", "[0.3, 0.3]", "[1.3, 0.3]"), "/vessels/goal: "},

@@ -241,19 +241,42 @@ void check_mask_way_in(const Environment& env, const std::vector<Polyline>& outl
     refuse_way_in(w, nearest(others), "comes within the introducer's radius of another vessel, which its lumen would join to the inlet,", image);
   }
   if (count(env.lumen, true) > count(outline, true)) {
-    // Where the loop closes: the first place along the way in, outside its own vessel, beside
-    // which a hole's wall runs (the new hole's wall also runs along the vessel at the start).
-    std::vector<double> beside;
-    for (const Polyline& ring : env.lumen)
-      if (is_hole(ring))
-        for (const Vec2& q : ring) {
-          const double s = std::clamp((q - w.tip).dot(w.far - w.tip) / w.length, 0.0, w.length);
-          if ((q - w.at(s)).norm() < radius + pixel_size) beside.push_back(s);
+    // Where the loop closes: walking back along the way in, the first place where, after a
+    // stretch clear of the lumen, the introducer meets it again (the new hole also touches the
+    // way in where it leaves its own vessel: reported there, it named the start).
+    const auto distance_to_wall = [&](const Vec2& p) {
+      double d = INFINITY;
+      for (const Polyline& ring : outline)
+        for (std::size_t k = 0; k < ring.size(); ++k) {
+          const Vec2 &a = ring[k], &b = ring[(k + 1) % ring.size()], ab = b - a;
+          const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+          d = std::min(d, (p - (a + t * ab)).norm());
         }
-    std::sort(beside.begin(), beside.end());
-    const auto closes = std::find_if(beside.begin(), beside.end(), [&](double s) { return !inside_lumen(outline, w.at(s)); });
-    refuse_way_in(w, closes == beside.end() ? 0.0 : *closes,
-                  "comes within the introducer's radius of its own vessel further on, which its lumen would join into a loop,", image);
+      return d;
+    };
+    double at = -1.0;
+    bool cleared = false;
+    for (double s = 0.0; s <= w.length && at < 0.0; s += pixel_size) {
+      const bool touching = inside_lumen(outline, w.at(s)) || distance_to_wall(w.at(s)) < radius;
+      if (!touching) cleared = true;
+      else if (cleared) at = s;
+    }
+    if (at < 0.0) {
+      // Never clear (the loop runs beside the way in from its own vessel's end): the first place
+      // outside its own vessel beside which the new hole's wall runs.
+      std::vector<double> beside;
+      for (const Polyline& ring : env.lumen)
+        if (is_hole(ring))
+          for (const Vec2& q : ring) {
+            const double s = std::clamp((q - w.tip).dot(w.far - w.tip) / w.length, 0.0, w.length);
+            if ((q - w.at(s)).norm() < radius + pixel_size) beside.push_back(s);
+          }
+      std::sort(beside.begin(), beside.end());
+      const auto outside = std::find_if(beside.begin(), beside.end(), [&](double s) { return !inside_lumen(outline, w.at(s)); });
+      at = outside == beside.end() ? 0.0 : *outside;
+    }
+    refuse_way_in(w, at, "comes within the introducer's radius of its own vessel elsewhere, which its lumen would join into a loop,",
+                  image);
   }
 }
 
