@@ -399,6 +399,10 @@ TEST(ReplayServer, BookmarksAreSavedAndAForeignFileIsLeftAlone) {
   ASSERT_TRUE(refused);
   EXPECT_EQ(refused->status, 500);
   EXPECT_EQ(vascsim::test::read_text(run + "/bookmarks.json"), "my notes, not JSON");
+  // What is wrong with the file is said, not only that it is not one.
+  vascsim::test::write_text(run + "/bookmarks.json", R"({"format": "notes/2", "bookmarks": []})");
+  const json format = get_json(s, "/api/bookmarks", 500);
+  EXPECT_NE(format.value("error", "").find("bookmarks.json: /format: expected \"vascsim-bookmarks/1\""), std::string::npos) << format.dump();
   // Keys another tool (or a later version) keeps in the file survive an added bookmark.
   vascsim::test::write_text(run + "/bookmarks.json", R"({"format": "vascsim-bookmarks/1", "reviewer": "A. N. Other",
       "bookmarks": [{"name": "entry", "t": 0.1, "view": "", "colour": "red"}]})");
@@ -598,6 +602,8 @@ TEST(ReplayServer, BookmarkNamesAreCountedInCharactersAndTimesAreBounded) {
   EXPECT_EQ(s.post("/api/bookmarks", R"({"name": ")" + e200 + R"(", "t": 0.5})")->status, 200) << "200 characters";
   EXPECT_EQ(s.post("/api/bookmarks", R"({"name": ")" + e201 + R"(", "t": 0.5})")->status, 400);
   EXPECT_EQ(s.post("/api/bookmarks", R"({"name": "   ", "t": 0.5})")->status, 400);
+  EXPECT_EQ(s.post("/api/bookmarks", R"({"name": "\u00a0\u3000", "t": 0.5})")->status, 400) << "Unicode spaces only";
+  EXPECT_EQ(s.post("/api/bookmarks", R"({"name": "\u00a0x", "t": 0.5})")->status, 200);
   EXPECT_EQ(s.post("/api/bookmarks", R"({"name": "a\u0000b", "t": 0.5})")->status, 400);
   EXPECT_EQ(s.post("/api/bookmarks", R"({"name": "late", "t": 1e13})")->status, 400);
 }

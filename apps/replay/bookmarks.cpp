@@ -19,14 +19,23 @@ constexpr std::size_t kMaxBookmarks = 10000;
 constexpr std::size_t kMaxBookmarkBytes = 64 * 1024;
 
 // 1..200 characters (UTF-8 code points, as the page's input counts them; the JSON reader has
-// checked the encoding), not all spaces, no control characters.
+// checked the encoding), not all spaces (Unicode's too: a name of no-break spaces shows as
+// nothing), no control characters.
 bool readable_name(const std::string& name) {
   std::size_t characters = 0;
   bool visible = false;
-  for (const unsigned char c : name) {
-    if ((c & 0xC0) != 0x80) ++characters;  // not a continuation byte
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(name[i]);
+    if ((c & 0xC0) == 0x80) continue;  // a continuation byte
+    ++characters;
     if (c < 0x20 || c == 0x7F) return false;
-    if (c != ' ') visible = true;
+    // The code point, from its lead byte and continuation bytes.
+    const int length = c < 0x80 ? 1 : c < 0xE0 ? 2 : c < 0xF0 ? 3 : 4;
+    char32_t code = length == 1 ? c : c & (0x7F >> length);
+    for (int k = 1; k < length && i + k < name.size(); ++k) code = code << 6 | (static_cast<unsigned char>(name[i + k]) & 0x3F);
+    const bool space = code == U' ' || code == 0xA0 || code == 0x1680 || (code >= 0x2000 && code <= 0x200B) ||
+                       code == 0x2028 || code == 0x2029 || code == 0x202F || code == 0x205F || code == 0x3000 || code == 0xFEFF;
+    if (!space) visible = true;
   }
   return characters >= 1 && characters <= 200 && visible;
 }
@@ -44,12 +53,16 @@ json load_bookmark_file(const std::string& path) {
   json doc;
   try {
     doc = io::parse_json_strictly(text.str(), path);
-  } catch (const InputError&) {
-    throw InputError(path + ": not a vascsim-bookmarks/1 file; left untouched");
+  } catch (const InputError& e) {
+    // The reader's message names the file and where the JSON breaks.
+    throw InputError(std::string(e.what()) + " (not a vascsim-bookmarks/1 file; left untouched)");
   }
-  if (!doc.is_object() || doc.value("format", "") != "vascsim-bookmarks/1" ||
-      !doc.contains("bookmarks") || !doc["bookmarks"].is_array())
-    throw InputError(path + ": not a vascsim-bookmarks/1 file; left untouched");
+  const auto refuse = [&](const std::string& what) {
+    throw InputError(path + ": " + what + " (not a vascsim-bookmarks/1 file; left untouched)");
+  };
+  if (!doc.is_object()) refuse("expected a JSON object");
+  if (doc.value("format", "") != "vascsim-bookmarks/1") refuse("/format: expected \"vascsim-bookmarks/1\"");
+  if (!doc.contains("bookmarks") || !doc["bookmarks"].is_array()) refuse("/bookmarks: expected an array");
   return doc;
 }
 
