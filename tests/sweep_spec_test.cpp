@@ -177,7 +177,7 @@ TEST(SweepSpec, MistakesInTheFileItselfNameThePointer) {
   expect_error(R"({"scene": "tiny.json", "axes": {"/loads/damping/coefficient": [1]}})", "/format: missing");
   expect_error(R"({"format": "vascsim-sweep/2", "scene": "tiny.json", "axes": {"/loads/damping/coefficient": [1]}})", "/format: expected \"vascsim-sweep/1\"");
   expect_error(R"({"format": "vascsim-sweep/1", "axes": {"/loads/damping/coefficient": [1]}})", "/scene: missing");
-  expect_error(sweep_with_axes("{}"), "/axes: expected an object of JSON pointers");
+  expect_error(sweep_with_axes("{}"), "/axes: expected at least one axis: an object of JSON pointers");
   expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [1]})", R"(, "combine": "cross")"), "/combine: expected one of \"product\", \"zip\"");
   expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [1]})", R"(, "repeat": 2)"), "/repeat: unknown key");
   expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": {"from": 3, "to": 1}})"), "/axes/~1loads~1damping~1coefficient/to: expected a number >= \"from\"");

@@ -205,7 +205,8 @@ int run_sweep_command(int argc, char** argv) {
       std::fprintf(stderr, "vascsim sweep: warning: %s has no effect in %zu of %zu runs: %s (each run's summary.json /unused_fields)\n",
                    u.pointer.c_str(), u.runs, plan.runs.size(), u.why.c_str());
     if (args.flag("dry-run")) {
-      std::printf("sweep %s: %zu runs of %s, every scene checked\n", spec.name.c_str(), plan.runs.size(), spec.scene_path.c_str());
+      std::printf("sweep %s: %zu run%s of %s, every scene checked\n", spec.name.c_str(), plan.runs.size(),
+                  plan.runs.size() == 1 ? "" : "s", spec.scene_path.c_str());
       const SweepManifest m = manifest_of(plan);
       for (std::size_t i = 0; i < m.runs.size(); ++i) std::printf("  %s  %s\n", m.runs[i].id.c_str(), sweep::describe_entry(m, i).c_str());
       return 0;
@@ -215,8 +216,8 @@ int run_sweep_command(int argc, char** argv) {
     bool resumed = false;
     dir = sweep::prepare_sweep_directory(plan, read_text(input), *out, args.flag("force"), resumed);
     if (!quiet)
-      std::printf("sweep %s: %zu runs in %s%s\n", spec.name.c_str(), plan.runs.size(), out->c_str(),
-                  resumed ? " (resuming)" : "");
+      std::printf("sweep %s: %zu run%s in %s%s\n", spec.name.c_str(), plan.runs.size(), plan.runs.size() == 1 ? "" : "s",
+                  out->c_str(), resumed ? " (resuming)" : "");
   }
   const std::size_t count = dir.manifest.runs.size();
 
@@ -228,12 +229,12 @@ int run_sweep_command(int argc, char** argv) {
       o.sshloginfile = args.value("sshloginfile").value_or("");
       o.retry_failed = args.flag("retry-failed");
       written = sweep::emit_gnu_parallel(dir, o, args.flag("force"));
-      std::printf("wrote %s (%zu entries)\nrun it:   sh %s\nthen:     vascsim sweep merge %s\n", written[1].c_str(), count,
-                  written[0].c_str(), dir.dir.c_str());
+      std::printf("wrote %s (%zu %s)\nrun it:   sh %s\nthen:     vascsim sweep merge %s\n", written[1].c_str(), count,
+                  count == 1 ? "entry" : "entries", sweep::shell_quote(written[0]).c_str(), sweep::shell_quote(dir.dir).c_str());
     } else {
       written = sweep::emit_slurm(dir, slurm, args.flag("force"));
       std::printf("wrote %s and %s\nsubmit:   bash %s   (the array, then the merge after it)\n", written[1].c_str(),
-                  written[2].c_str(), written[0].c_str());
+                  written[2].c_str(), sweep::shell_quote(written[0]).c_str());
     }
     return 0;
   }

@@ -148,7 +148,8 @@ SweepSpec read_sweep_text(const std::string& text, const std::string& label) {
 
   const json* axes = in.raw("axes");
   if (!axes || !axes->is_object() || axes->empty())
-    in.fail("axes", "an object of JSON pointers into the scene, each with its values: {\"/control/kp\": [2, 4, 8]}",
+    in.fail("axes", std::string(axes && axes->is_object() ? "at least one axis: " : "") +
+                        "an object of JSON pointers into the scene, each with its values: {\"/control/kp\": [2, 4, 8]}",
             axes ? *axes : json(nullptr));
   for (const std::string& key : keys_in_file_order(text, "axes")) {
     const std::string where = "/axes/" + io::escape_pointer_token(key);
