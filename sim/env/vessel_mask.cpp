@@ -1,11 +1,11 @@
 #include "sim/env/vessel_mask.h"
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "sim/env/distance_transform.h"
 #include "sim/env/grid_path.h"
@@ -146,12 +146,12 @@ LumenRadius radius_at(const VesselMaskSpec& spec, const DistanceMap& dm, const V
 }
 
 // Where the route starts at the image's border, the border is the nearest "wall" of its first
-// points, but the vessel runs on out of the image there (the introducer continues it): those
-// points, and those the border still pulls off the axis, take the vessel's radius. Near the border the centre-seeking path also bends off the
-// vessel's axis (towards one wall, where the vessel leaves at a slant), so the vessel's radius is
-// the largest over the stretch from the last point that has the border nearest until both a
-// diameter further and a diameter from the border; the first point had half a pixel (refused as
-// a narrowing, or an introducer far thinner than its vessel), and the first point past the
+// points, but the vessel runs on out of the image there (the introducer continues it). Near the
+// border the centre-seeking path also bends off the vessel's axis, towards one wall where the
+// vessel leaves at a slant. So the points from the start until the path is both a diameter past
+// the last point that has the border nearest and a diameter from the border take the largest
+// radius over that stretch, the vessel's. Before, the first point had half a pixel (refused as a
+// narrowing, or an introducer far thinner than its vessel), and the first point past the
 // border's reach 11 px for 20 at 75 degrees. A route whose every point has the border nearest (a
 // vessel lying along it) keeps those distances. Returns the index where that stretch ends (0 if
 // the route does not start at the border): from there on the path is on the vessel's axis.
