@@ -136,7 +136,7 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   }
   const double t0 = std::clamp(o.from.value_or(source.first_time()), source.first_time(), source.last_time());
   const double t1 = std::clamp(o.to.value_or(source.last_time()), source.first_time(), source.last_time());
-  if (t1 < t0) throw InputError("time range [" + std::to_string(t0) + ", " + std::to_string(t1) + "] s is empty");
+  if (t1 < t0) throw InputError("time range [" + io::format_number(t0) + ", " + io::format_number(t1) + "] s is empty");
 
   // Refuse to overwrite before doing any work.
   if (!o.mp4_path.empty()) check_replaceable_output(o.mp4_path, o.force, source.run_files());
@@ -159,9 +159,9 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
 
   const double frames = std::floor((t1 - t0) * o.fps / o.speed + 1e-9) + 1;
   if (frames > kMaxVideoFrames)
-    throw InputError("the time range " + std::to_string(t0) + " .. " + std::to_string(t1) + " s at " + std::to_string(o.fps) +
-                     " fps and speed " + std::to_string(o.speed) + " makes " + std::to_string(frames) +
-                     " frames, more than " + std::to_string(kMaxVideoFrames) + ": choose a shorter --from/--to or a higher --speed");
+    throw InputError("the time range " + io::format_number(t0) + " .. " + io::format_number(t1) + " s at " + std::to_string(o.fps) +
+                     " fps and speed " + io::format_number(o.speed) + " makes " + io::format_number(frames) +
+                     " frames, more than " + io::format_number(kMaxVideoFrames) + ": choose a shorter --from/--to or a higher --speed");
   const auto count = static_cast<std::size_t>(frames);
   const View& view = o.view;
   std::unique_ptr<VideoEncoder> video;

@@ -131,6 +131,11 @@ TEST(RenderCli, BadOptionsExit2) {
     EXPECT_FALSE(r.err.empty()) << opts;
   }
   EXPECT_FALSE(fs::exists(run + "/video.mp4"));
+  // Too many frames: the numbers read as the user gave them ("speed 1e-09", not "0.000000").
+  const auto r = run_vascsim("render '" + run + "' --speed 1e-9 --mp4 '" + (dir / "v.mp4") + "'", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(" fps and speed 1e-09 makes "), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("0.000000"), std::string::npos) << r.err;
 }
 
 // A width x height image of one grey level.

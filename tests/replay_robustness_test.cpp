@@ -167,7 +167,14 @@ TEST(ReplayRobustness, SurvivesMalformedHttpAndHangUps) {
     if (status == "HTTP/1.1 400") {
       EXPECT_NE(reply.find("\"parameter\":\"body\""), std::string::npos) << reply;
     }
+    // The body is left unread: the client is asked to close rather than have it read as the next
+    // request (a GET's "x=1" was answered as one).
+    EXPECT_NE(reply.find("Connection: close\r\n"), std::string::npos) << reply.substr(0, 300);
   }
+  // So is one refused for its token, which may have sent a body.
+  const std::string refused = raw_exchange(port, "POST /api/bookmarks?token=wrong HTTP/1.1\r\nHost: x\r\nContent-Length: 3\r\n\r\nx=1");
+  EXPECT_EQ(refused.rfind("HTTP/1.1 403", 0), 0u) << refused.substr(0, 200);
+  EXPECT_NE(refused.find("Connection: close\r\n"), std::string::npos) << refused.substr(0, 300);
   // A client that asks for a frame and hangs up before the answer.
   for (int k = 0; k < 5; ++k)
     raw_exchange(port, "GET " + s.authorised("/api/frame.png?width=1024&height=1024&t=0.5") + " HTTP/1.1\r\n\r\n", true);

@@ -116,6 +116,11 @@ std::string body_framing_problem(const httplib::Request& req, int& status) {
   return "";
 }
 
+// Asks the client to end the connection after this answer: given where the request's body (if it
+// sent one) is left unread, which the library would otherwise read as the next request on a kept
+// connection. The library cannot close from a handler; HTTP clients close on this header.
+void ask_to_close(httplib::Response& res) { res.set_header("Connection", "close"); }
+
 // The URL's query parameters. The library also parses a form-encoded body into its parameters,
 // so JSON posted with curl -d's default content type became a "parameter" named after the whole
 // body; no endpoint takes form fields.
@@ -554,10 +559,12 @@ struct ReplayServer::Impl {
         int status = 0;
         if (const std::string problem = body_framing_problem(req, status); !problem.empty()) {
           send_error(res, status, problem, status == 400 ? "body" : "");
+          ask_to_close(res);
           return httplib::Server::HandlerResponse::Handled;
         }
         return httplib::Server::HandlerResponse::Unhandled;
       }
+      ask_to_close(res);
       if (options.require_token)
         send_error(res, 403, "missing or wrong token: open the URL that vascsim replay printed", "token");
       else

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -165,7 +166,9 @@ std::string incomplete_run_warning(const std::string& run_path) {
 }
 
 InputError bad_frame_time(const std::string& path, std::size_t i, double t, const char* why) {
-  return InputError(path + ": frame " + std::to_string(i) + " has time " + std::to_string(t) + " s, " + why +
+  char time[32];
+  std::snprintf(time, sizeof time, "%.17g", t);  // all digits: the fault may be in the last ones
+  return InputError(path + ": frame " + std::to_string(i) + " has time " + time + " s, " + why +
                     " (times must be finite, >= 0 and non-decreasing)");
 }
 

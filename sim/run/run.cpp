@@ -129,7 +129,9 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
   }
   if (!state_.x.allFinite() || !state_.v.allFinite()) {
     stats_.failed = true;
-    stats_.failure = "the state became non-finite at t = " + std::to_string(state_.t) + " s";
+    char text[80];
+    std::snprintf(text, sizeof text, "the state became non-finite at t = %.9g s", state_.t);
+    stats_.failure = text;
     return false;
   }
   if (report.round_off_stop) stats_.warnings.newton_round_off.note(t_start);
