@@ -214,6 +214,23 @@ TEST(CliRun, ADirectoryOrADeviceIsNotASceneFile) {
   fs::remove_all(dir);
 }
 
+// The summary line gives the goal time to the millisecond, as summary.json has it (it printed
+// "45.859982 s").
+TEST(CliRun, TheGoalTimeIsPrintedToTheMillisecond) {
+  const std::string dir = fresh_temp_dir("run_goal");
+  write_text(dir + "/scene.json", R"({"name": "tiny", "maze": {"seed": 4, "rows": 2, "cols": 2}, "rod": {"nodes": 12},
+                                      "path": {"speed": 0.2}, "run": {"duration": 6, "output_interval": 0.5}})");
+  const CommandResult r = run_vascsim("run " + dir + "/scene.json --out " + dir + "/out");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(read_text(dir + "/out/summary.json"));
+  ASSERT_TRUE(j["navigation"]["goal_reached"].get<bool>()) << r.output;
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "goal reached at t = %.3f s, tip error rms ",
+                j["navigation"]["goal_time"].get<double>());
+  EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
 // A catheter only pushed from its root (control.mode "none", control.advance) follows no
 // reference: the summary line reports the drive's push, not a tracking error it cannot have.
 TEST(CliRun, ARunWithoutTipControlReportsTheFeedNotATrackingError) {

@@ -203,12 +203,13 @@ int run_run_command(int argc, char** argv) {
     std::printf("error control: mean step %.3g s, %d steps rejected over the tolerance, %d kept over it at a floor\n",
                 s.steps ? s.simulated_time / s.steps : 0.0, s.error_rejected_steps, s.warnings.step_over_tolerance.count);
   if (run.navigation()) {
-    const std::string goal = s.goal_reached ? "goal reached at t = " + std::to_string(s.goal_time) + " s" : "goal not reached";
+    char goal[64] = "goal not reached";
+    if (s.goal_reached) std::snprintf(goal, sizeof goal, "goal reached at t = %.3f s", s.goal_time);
     // Without tip actuation (control.mode "none") nothing follows the reference: no tracking error to report.
     if (scene.control.mode == ActuationMode::kNone)
-      std::printf("%s, no tip control, max penetration %.3f mm\n", goal.c_str(), 1e3 * s.max_penetration);
+      std::printf("%s, no tip control, max penetration %.3f mm\n", goal, 1e3 * s.max_penetration);
     else
-      std::printf("%s, tip error rms %.2f mm max %.2f mm, max penetration %.3f mm\n", goal.c_str(), 1e3 * s.tip_error_rms,
+      std::printf("%s, tip error rms %.2f mm max %.2f mm, max penetration %.3f mm\n", goal, 1e3 * s.tip_error_rms,
                   1e3 * s.tip_error_max, 1e3 * s.max_penetration);
     if (scene.control.advance.enabled())
       std::printf("feed: pushed with up to %.3g N (mean %.3g N)\n", s.feed_force_max, s.feed_force_mean);
