@@ -209,6 +209,14 @@ TEST(SweepCli, RunIndexAndShardSelectEntries) {
   const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);
   ASSERT_EQ(sweep_command(sweep + " --out " + dir + "/out --emit gnu-parallel").exit_code, 0);  // makes DIR, runs nothing
   EXPECT_FALSE(fs::exists(dir + "/out/runs/0000/summary.json"));
+  // A merge before any run: the table has the maze scene's columns, not the free-space ones
+  // (chosen from runs' figures, there were none).
+  const CommandResult early = sweep_command("merge " + dir + "/out --no-plots");
+  ASSERT_EQ(early.exit_code, 0) << early.output;
+  EXPECT_TRUE(has(early.output, "8 runs: 0 done, 0 failed, 8 missing")) << early.output;
+  EXPECT_TRUE(has(early.output, "tip error RMS (mm)")) << early.output;
+  EXPECT_FALSE(has(early.output, "Newton iterations")) << early.output;
+  for (const char* merged : {"/out/results.csv", "/out/results.json"}) fs::remove(dir + merged);
   const CommandResult one = sweep_command(dir + "/out --run-index 6");
   ASSERT_EQ(one.exit_code, 0) << one.output;
   EXPECT_TRUE(has(one.output, "run 0006: done")) << one.output;

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "sim/io/output_file.h"
+#include "sim/io/scene_reader.h"
 #include "sim/scene/input_error.h"
 #ifdef VASCSIM_HAVE_RENDER
 #include "render/sweep_plot.h"
@@ -103,22 +104,35 @@ render::SweepFigure figure_of(const SweepManifest& m, const std::vector<RunOutco
 
 }  // namespace
 
-std::vector<std::size_t> headline_metrics(const std::vector<RunOutcome>& outcomes) {
-  bool navigation = false;
-  for (const auto& o : outcomes) navigation = navigation || std::isfinite(o.metrics[kTipErrorRms]);
+bool sweep_navigates(const SweepDirectory& sweep, const std::vector<RunOutcome>& outcomes) {
+  bool any_done = false;
+  for (const auto& o : outcomes) {
+    if (std::isfinite(o.metrics[kTipErrorRms])) return true;
+    any_done = any_done || o.status == "done";
+  }
+  // Before any run has figures, the scene says which columns the table will fill (a merge
+  // before the runs showed the free-space ones for a maze sweep).
+  if (any_done || sweep.manifest.runs.empty()) return false;
+  try {
+    return read_scene_file((fs::path(sweep.dir) / run_scene_path(sweep.manifest.runs.front().id)).string()).has_environment;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+std::vector<std::size_t> headline_metrics(bool navigation) {
   if (navigation) return {kTipErrorRms, kTipErrorMax, kGoalTime, kMaxPenetration};
   return {kSteps, kNewtonIterations, kRejectedSteps};
 }
 
-std::string summary_table(const SweepManifest& m, const std::vector<RunOutcome>& outcomes) {
+std::string summary_table(const SweepManifest& m, const std::vector<RunOutcome>& outcomes, bool navigation) {
   const auto& all = sweep_metrics();
-  const std::vector<std::size_t> metrics = headline_metrics(outcomes);
+  const std::vector<std::size_t> metrics = headline_metrics(navigation);
   std::size_t done = 0, failed = 0, missing = 0;
   for (const auto& o : outcomes) done += o.status == "done", failed += o.status == "failed", missing += o.status == "missing";
   std::string out = "sweep " + m.name + " (" + m.scene + "): " + std::to_string(m.runs.size()) + " runs: " +
                     std::to_string(done) + " done, " + std::to_string(failed) + " failed, " + std::to_string(missing) +
                     " missing\n";
-  const bool navigation = metrics.front() == kTipErrorRms;
   for (const auto& axis : summarise_sweep(m, outcomes)) {
     std::string header = "\n" + cell(axis.pointer, 18) + cell("runs", 6) + cell("failed", 8) + cell("missing", 9) +
                          (navigation ? cell("goal", 7) : "");
@@ -196,9 +210,10 @@ MergeReport merge_sweep(const SweepDirectory& sweep, bool force, bool plots) {
   write_file_atomically(csv, sweep_results_csv(m, outcomes));
   write_file_atomically(json, sweep_results_json(m, outcomes));
   report.written = {csv, json};
+  const bool navigation = sweep_navigates(sweep, outcomes);
 #ifdef VASCSIM_HAVE_RENDER
   if (drawing) {
-    const std::vector<std::size_t> metrics = headline_metrics(outcomes);
+    const std::vector<std::size_t> metrics = headline_metrics(navigation);
     for (std::size_t k = 0; k < m.axes.size(); ++k) {
       render::write_sweep_figure(figure_of(m, outcomes, k, metrics), figures[k], 1600, 1100);
       report.written.push_back(figures[k]);
@@ -207,7 +222,7 @@ MergeReport merge_sweep(const SweepDirectory& sweep, bool force, bool plots) {
 #else
   if (plots) report.note = "no plots: this build has no renderer (configure with -DVASCSIM_RENDER=ON)";
 #endif
-  report.table = summary_table(m, outcomes);
+  report.table = summary_table(m, outcomes, navigation);
   return report;
 }
 

@@ -27,9 +27,12 @@ MergeReport merge_sweep(const SweepDirectory& sweep, bool force, bool plots = tr
 // The files a merge writes (results.csv, results.json, the plots) that exist already: those a
 // merge without `force` would refuse to replace.
 std::vector<std::string> earlier_merge_outputs(const SweepDirectory& sweep);
-// The figures a table and the plots show: navigation figures when any run has them, else the
+// Whether the sweep navigates: any run's figures say so or, while no run has completed, the first
+// run's scene does (it has a maze or vessels; an unreadable one does not).
+bool sweep_navigates(const SweepDirectory& sweep, const std::vector<RunOutcome>& outcomes);
+// The figures a table and the plots show: navigation figures for a sweep that navigates, else the
 // solver's counts (a sweep of free-space scenes).
-std::vector<std::size_t> headline_metrics(const std::vector<RunOutcome>& outcomes);
-std::string summary_table(const SweepManifest& manifest, const std::vector<RunOutcome>& outcomes);
+std::vector<std::size_t> headline_metrics(bool navigation);
+std::string summary_table(const SweepManifest& manifest, const std::vector<RunOutcome>& outcomes, bool navigation);
 
 }  // namespace vascsim::sweep
