@@ -272,11 +272,19 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
     paint_arrows(c, f.contact, scales_.contact_px_per_newton, scales_.contact_max_px, contact_w, kContact);
   if (on.has(Layer::kMagnetic) && scales_.actuation_px_per_newton > 0 && !f.actuation.empty()) {
     const Vec2 F = f.actuation_total() * scales_.actuation_px_per_newton;
-    glm::vec2 d(static_cast<float>(F.x()), static_cast<float>(-F.y()));
-    const float len = std::sqrt(d.x * d.x + d.y * d.y);
-    if (len > scales_.actuation_max_px) d *= static_cast<float>(scales_.actuation_max_px) / len;
-    if (len >= 1.0f) c.arrow(scratch_.back(), scratch_.back() + d, actuation_arrow_width(h), kActuation);
+    if (F.norm() >= 1.0)
+      c.arrow(scratch_.back(), scratch_.back() + arrow_vector(F, scales_.actuation_max_px), actuation_arrow_width(h), kActuation);
   }
+}
+
+// On screen (y down), no longer than `max_px` nor than a length that has left the frame from any
+// point in it: a user's scale (1e12 px/N) made arrows of 1e9 px, whose width float precision
+// lost in the shader, so none was drawn. In double until capped, so no length overflows a float.
+glm::vec2 FramePainter::arrow_vector(const Vec2& px, double max_px) const {
+  const double cap = std::min(max_px, 2.0 * (view_.width + view_.height));
+  const double len = px.norm();
+  const Vec2 d = len > cap ? Vec2(px * (cap / len)) : px;
+  return {static_cast<float>(d.x()), static_cast<float>(-d.y())};
 }
 
 // The lumen in the tissue tone, so the walls read as the boundary of a channel: the logged rings'
@@ -326,11 +334,8 @@ void FramePainter::paint_arrows(Canvas& c, const std::vector<double>& forces, do
                                 float width, Rgba colour) {
   if (px_per_newton <= 0 || forces.size() != 2 * scratch_.size()) return;
   for (std::size_t i = 0; i < scratch_.size(); ++i) {
-    glm::vec2 d(static_cast<float>(forces[2 * i] * px_per_newton), static_cast<float>(-forces[2 * i + 1] * px_per_newton));
-    const float len = std::sqrt(d.x * d.x + d.y * d.y);
-    if (len < 1.0f) continue;
-    if (len > max_px) d *= static_cast<float>(max_px) / len;
-    c.arrow(scratch_[i], scratch_[i] + d, width, colour);
+    const Vec2 px = Vec2(forces[2 * i], forces[2 * i + 1]) * px_per_newton;
+    if (px.norm() >= 1.0) c.arrow(scratch_[i], scratch_[i] + arrow_vector(px, max_px), width, colour);
   }
 }
 

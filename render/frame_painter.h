@@ -74,6 +74,7 @@ class FramePainter {
                    const FrameState* overlay);
   void paint_lumen(Canvas& c, const glm::dmat3& m);
   void paint_rod(Canvas& c, const glm::dmat3& m, const FrameState& f, Rgba body, Rgba edge, Rgba tip);
+  glm::vec2 arrow_vector(const Vec2& px, double max_px) const;
   void paint_arrows(Canvas& c, const std::vector<double>& forces, double px_per_newton, double max_px, float width,
                     Rgba colour);
   void paint_panel(Canvas& c, const FrameState& f);

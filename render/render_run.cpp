@@ -55,15 +55,14 @@ std::string dropped_note(const Canvas& canvas) {
 }
 
 // `vascsim render RUN --still T --png FILE`: one view, the same pixels the replay server sends.
-RenderReport render_still(const FrameSource& source, const RenderOptions& o) {
-  check_replaceable_output(o.png_path, o.force, source.run_files());
+RenderReport render_still(const FrameSource& source, const FrameSource* overlay, const std::vector<std::string>& inputs,
+                          const RenderOptions& o) {
+  check_replaceable_output(o.png_path, o.force, inputs);
   remove_stale_temporaries(fs::path(o.png_path).parent_path().string());
-  std::unique_ptr<FrameSource> overlay;
-  if (!o.overlay_run.empty()) overlay = std::make_unique<FrameSource>(o.overlay_run);
   ViewFrameInputs in;
   in.source = &source;
   in.peaks = measure_force_peaks(source);
-  in.overlay = overlay.get();
+  in.overlay = overlay;
   Canvas canvas(o.view.width, o.view.height, o.aa);
   std::vector<std::uint8_t> rgba;
   render_view_frame(canvas, in, o.view, *o.still, rgba);
@@ -127,7 +126,17 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
     throw InputError("--still " + io::format_number(*o.still) + ": no frame at that time" + span);
   if ((o.from && *o.from > source.last_time()) || (o.to && *o.to < source.first_time()))
     throw InputError("--from/--to: no frame in the time range" + span);
-  if (o.still) return render_still(source, o);
+  // Compare: run B's rod at each frame's time (clamped to its own range), over this run's map.
+  // Its log is checked as this run's is, and its files are inputs too: no output replaces them.
+  std::unique_ptr<FrameSource> overlay;
+  std::vector<std::string> inputs = source.run_files();
+  if (!o.overlay_run.empty()) {
+    overlay = std::make_unique<FrameSource>(o.overlay_run);
+    overlay->check_times(overlay->frame_count());
+    const std::vector<std::string> overlay_files = overlay->run_files();
+    inputs.insert(inputs.end(), overlay_files.begin(), overlay_files.end());
+  }
+  if (o.still) return render_still(source, overlay.get(), inputs, o);
   if (o.mp4_path.empty() && o.png_dir.empty() && o.plots_dir.empty()) {
     std::error_code ec;
     o.mp4_path = fs::is_directory(run_dir, ec) ? (fs::path(run_dir) / "video.mp4").string()
@@ -139,7 +148,7 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   if (t1 < t0) throw InputError("time range [" + io::format_number(t0) + ", " + io::format_number(t1) + "] s is empty");
 
   // Refuse to overwrite before doing any work.
-  if (!o.mp4_path.empty()) check_replaceable_output(o.mp4_path, o.force, source.run_files());
+  if (!o.mp4_path.empty()) check_replaceable_output(o.mp4_path, o.force, inputs);
   // What a killed render left here under temporary names goes first (sim/io/output_file.h).
   if (!o.mp4_path.empty()) remove_stale_temporaries(fs::path(o.mp4_path).parent_path().string());
   if (!o.png_dir.empty()) {
@@ -167,12 +176,9 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   std::unique_ptr<VideoEncoder> video;
   if (!o.mp4_path.empty()) {
     video = std::make_unique<VideoEncoder>(o.mp4_path, VideoSettings{view.width, view.height, o.fps, 20});
-    check_replaceable_output(video->path(), o.force, source.run_files());
+    check_replaceable_output(video->path(), o.force, inputs);
   }
 
-  // Compare: run B's rod at each frame's time (clamped to its own range), over this run's map.
-  std::unique_ptr<FrameSource> overlay;
-  if (!o.overlay_run.empty()) overlay = std::make_unique<FrameSource>(o.overlay_run);
   FrameState state, overlay_state;
   source.frame(0, state);
   const ForceScales scales = choose_force_scales(source, view);

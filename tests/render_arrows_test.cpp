@@ -20,9 +20,9 @@ namespace fs = std::filesystem;
 constexpr int kW = 320, kH = 240;
 constexpr int kNodes = 11;
 
-// Rod along +x at y = 20 mm from x = 10 to 30 mm. Magnetic force +x 1 mN on the tip; contact
-// +y 2 mN on node 3 (world up) and -y 1 mN on node 7.
-std::string write_log(const ScratchDir& dir) {
+// Rod along +x at y = 20 mm from x = 10 to 30 mm. Magnetic force +x 1 mN on the tip (and
+// `tip_force_y` N along +y); contact +y 2 mN on node 3 (world up) and -y 1 mN on node 7.
+std::string write_log(const ScratchDir& dir, double tip_force_y = 0) {
   LogMetadata m;
   m.bounds = {Vec2(0, 0), Vec2(0.04, 0.04)};
   m.rod_outer_radius = 0.0003;
@@ -32,7 +32,7 @@ std::string write_log(const ScratchDir& dir) {
                 {channel::kActuationForce, "N", ChannelLayout::kNodeVectors, 2 * kNodes},
                 {channel::kContactForce, "N", ChannelLayout::kNodeVectors, 2 * kNodes}};
   h.metadata = write_log_metadata(m);
-  const std::string path = dir / "arrows.vlog";
+  const std::string path = dir / (tip_force_y == 0 ? "arrows.vlog" : "arrows_diagonal.vlog");
   FrameLogWriter w(path, h);
   std::vector<double> v(6 * kNodes, 0.0);
   for (int i = 0; i < kNodes; ++i) {
@@ -40,6 +40,7 @@ std::string write_log(const ScratchDir& dir) {
     v[2 * i + 1] = 0.020;
   }
   v[2 * kNodes + 2 * (kNodes - 1)] = 1e-3;
+  v[2 * kNodes + 2 * (kNodes - 1) + 1] = tip_force_y;
   v[4 * kNodes + 2 * 3 + 1] = 2e-3;
   v[4 * kNodes + 2 * 7 + 1] = -1e-3;
   w.append(0.0, v);
@@ -67,7 +68,7 @@ int extent(const Picture& p, glm::dvec2 from, int dx, int dy, Rgba c) {
 }
 
 void draw(const std::string& log, double act_scale, double con_scale, Picture& pic, FramePainter** painter_out,
-          FrameState& state) {
+          FrameState& state, AntiAliasing aa = AntiAliasing::kNone) {
   FrameSource source(log);
   View view;
   view.width = kW;
@@ -79,7 +80,7 @@ void draw(const std::string& log, double act_scale, double con_scale, Picture& p
   const ForceScales scales = choose_force_scales(source, view);
   static std::unique_ptr<FramePainter> painter;
   painter = std::make_unique<FramePainter>(source.metadata(), view, scales, state);
-  Canvas canvas(kW, kH, AntiAliasing::kNone);
+  Canvas canvas(kW, kH, aa);
   painter->paint(canvas, state, {});
   canvas.finish(pic.rgba.data());
   *painter_out = painter.get();
@@ -109,6 +110,18 @@ TEST(RenderArrows, PointAlongTheForceAndScaleWithIt) {
   Picture twice;
   draw(log, 80000.0, 20000.0, twice, &painter, state);
   EXPECT_NEAR(extent(twice, tip, +1, 0, kActuationColour), 80, 2);
+
+  // A scale that takes arrows far off the frame draws them to its edge (at 1e12 px/N and more
+  // they were not drawn at all: a slanting arrow's width was lost to float precision in the
+  // analytic anti-aliasing's shader).
+  const std::string diagonal = write_log(dir, 1e-3);
+  for (const double huge : {1e12, 1e15}) {
+    Picture off;
+    draw(diagonal, huge, huge, off, &painter, state, AntiAliasing::kAnalytic);
+    const int to_edge = std::min({199, kW - 1 - static_cast<int>(tip.x), static_cast<int>(tip.y)});
+    EXPECT_GE(extent(off, tip, +1, -1, kActuationColour), to_edge - 2) << huge;
+    EXPECT_GE(extent(off, n3, 0, -1, kContactColour), std::min(199, static_cast<int>(n3.y))) << huge;
+  }
 }
 
 TEST(RenderArrows, AutomaticScaleKeepsTheLargestArrowOnScreen) {

@@ -10,6 +10,8 @@
 #include "render/view.h"
 #include "render/view_frame.h"
 #include "render_test_util.h"
+#include "sim/io/log_metadata.h"
+#include "sim/log/frame_log.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -108,6 +110,40 @@ TEST(RenderView, StillAtTIsTheVideoFrameAtT) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(testing::read_bytes(dir / "still_b.png") == testing::read_bytes(dir / "seq_b/frame_000007.png"));
   EXPECT_FALSE(testing::read_bytes(dir / "still_b.png") == testing::read_bytes(dir / "still.png")) << "no overlay drawn";
+}
+
+// Run B drawn over a run is an input like it: its files are never replaced by an output (a still
+// with --force wrote a PNG over its frames.vlog), its log's times are checked (a frame out of
+// order drew B's rod at another time), and an empty --overlay is refused (it drew no overlay).
+TEST(RenderView, AnOverlaidRunIsAnInput) {
+  ScratchDir dir("view_overlay_input");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  const std::string run_b = testing::make_run(dir, SyntheticLogSpec{}, "b");
+  const std::string log_b = run_b + "/frames.vlog";
+  const std::string log_bytes = testing::read_bytes(log_b);
+  auto r = testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --png " + log_b + " --force --overlay " + run_b, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.err.find("refusing to write over it"), std::string::npos) << r.err;
+  EXPECT_TRUE(testing::read_bytes(log_b) == log_bytes) << "run B's log was replaced";
+
+  const std::string unordered = dir / "unordered.vlog";
+  {
+    FrameLogHeader h;
+    h.node_count = 3;
+    h.channels = {{"position", "m", ChannelLayout::kNodeVectors, 6}};
+    h.metadata = write_log_metadata(synthetic_metadata(SyntheticLogSpec{}));
+    FrameLogWriter w(unordered, h);
+    for (const double t : {0.0, 0.6, 0.2, 0.9}) w.append(t, {0.0, 0.0, 0.01, 0.0, 0.02, t});
+  }
+  r = testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --png " + (dir / "b.png") +
+                               " --overlay " + unordered, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.err.find("unordered.vlog: frame 2 has time 0.2"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "b.png"));
+
+  r = testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --png " + (dir / "c.png") + " --overlay ''", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.err.find("--overlay: expected run B's directory or frame log, got an empty path"), std::string::npos) << r.err;
 }
 
 TEST(RenderView, BadViewOptionsExit2NamingTheOption) {

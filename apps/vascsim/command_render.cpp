@@ -90,6 +90,8 @@ int run_render_command(int argc, char** argv) {
   if (args.value("still")) o.still = args.number("still", 0, -1e12, 1e12);
   o.png_path = args.value("png").value_or("");
   o.overlay_run = args.value("overlay").value_or("");
+  if (args.value("overlay") && o.overlay_run.empty())
+    throw UsageError("--overlay: expected run B's directory or frame log, got an empty path");
   try {
     if (args.value("center")) {
       o.view.centre = render::parse_centre(*args.value("center"));
@@ -114,8 +116,9 @@ int run_render_command(int argc, char** argv) {
   else throw UsageError("--aa: expected analytic or msaa, got '" + aa + "'");
   o.force = args.flag("force");
 
-  if (const std::string warning = incomplete_run_warning(args.positional()[0]); !warning.empty())
-    std::fprintf(stderr, "vascsim render: %s\n", warning.c_str());
+  for (const std::string& run : {args.positional()[0], o.overlay_run})
+    if (const std::string warning = incomplete_run_warning(run); !warning.empty())
+      std::fprintf(stderr, "vascsim render: %s\n", warning.c_str());
   bool progress_shown = false;
   o.progress = terminal_progress(!args.flag("quiet"), progress_shown);
   const render::RenderReport r = render::render_run(args.positional()[0], o);
