@@ -141,6 +141,12 @@ TEST(RenderView, AnOverlaidRunIsAnInput) {
   EXPECT_NE(r.err.find("unordered.vlog: frame 2 has time 0.2"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "b.png"));
 
+  const std::string stopped = testing::make_run(dir, SyntheticLogSpec{}, "stopped");
+  std::filesystem::remove(stopped + "/summary.json");
+  r = testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --png " + (dir / "s.png") + " --overlay " + stopped, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: " + stopped + " has no summary.json"), std::string::npos) << r.err;
+
   r = testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --png " + (dir / "c.png") + " --overlay ''", dir);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.err.find("--overlay: expected run B's directory or frame log, got an empty path"), std::string::npos) << r.err;
