@@ -31,6 +31,9 @@ TEST(CliMaze, UsageErrorsExitTwo) {
       {"maze --bogus --out " + dir + "/m.json", "unknown option '--bogus'"},
       {"maze --rows 0 --out " + dir + "/m.json", "--rows: expected an integer in [1, 200], got '0'"},
       {"maze --rows", "option '--rows' needs a value R"},
+      // An unset variable in a script: named, not ": cannot write".
+      {"maze --out ''", "option '--out' needs a value FILE, got an empty one"},
+      {"maze --out=", "option '--out' needs a value FILE, got an empty one"},
       {"maze", "--out FILE is required"},
       {"maze --solver dfs --out " + dir + "/m.json", "--solver: expected wall_follower or bfs, got 'dfs'"},
       {"frobnicate", "unknown command 'frobnicate'"},

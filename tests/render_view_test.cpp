@@ -149,7 +149,7 @@ TEST(RenderView, AnOverlaidRunIsAnInput) {
 
   r = testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --png " + (dir / "c.png") + " --overlay ''", dir);
   EXPECT_EQ(r.exit_code, 2) << r.out;
-  EXPECT_NE(r.err.find("--overlay: expected run B's directory or frame log, got an empty path"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("option '--overlay' needs a value RUN_B, got an empty one"), std::string::npos) << r.err;
 }
 
 TEST(RenderView, BadViewOptionsExit2NamingTheOption) {
@@ -168,12 +168,16 @@ TEST(RenderView, BadViewOptionsExit2NamingTheOption) {
       {"--still 0.5 --png X --mp4 v.mp4", "--mp4"},
       {"--still 99 --png X", "--still 99: no frame at that time (the log spans 0 .. 1 s)"},
       {"--mp4 v.mp4 --from 5 --to 6", "--from/--to: no frame in the time range"},
+      {"--still 0.5 --png ''", "option '--png' needs a value FILE, got an empty one"},
   };
   for (const auto& [options, named] : cases) {
     const auto r = testing::run_vascsim("render " + run + " " + options, dir);
     EXPECT_EQ(r.exit_code, 2) << options;
     EXPECT_NE(r.err.find(named), std::string::npos) << options << ": " << r.err;
   }
+  // An empty list is a list: no layers, a blank page.
+  const auto blank = testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --layers '' --png " + (dir / "blank.png"), dir);
+  EXPECT_EQ(blank.exit_code, 0) << blank.err;
 }
 
 }  // namespace

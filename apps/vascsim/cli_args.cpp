@@ -37,6 +37,10 @@ Args::Args(int argc, char** argv, int first, const std::vector<OptionSpec>& opti
       if (i + 1 >= argc) throw UsageError("option '--" + name + "' needs a value " + spec->value_name);
       values_[name] = argv[++i];
     }
+    // An empty list is a list (--layers '' draws no layer); an empty path or number is a
+    // script's unset variable, which gave messages such as ": not a directory".
+    if (!spec->value_name.empty() && values_[name].empty() && spec->value_name != kListValue)
+      throw UsageError("option '--" + name + "' needs a value " + spec->value_name + ", got an empty one");
   }
 }
 

@@ -17,6 +17,9 @@ class UsageError : public std::runtime_error {
   explicit UsageError(const std::string& m) : std::runtime_error(m) {}
 };
 
+// The value name of an option that takes a comma-separated list, which may be empty.
+inline constexpr const char* kListValue = "a,b,...";
+
 struct OptionSpec {
   std::string name;        // without the leading dashes
   std::string value_name;  // empty for a flag

@@ -35,8 +35,8 @@ const std::vector<OptionSpec>& render_options() {
       {"camera", "fit|follow|center", "fit the whole maze (default), follow the tip, or centre on --center"},
       {"zoom", "Z", "magnification over the fitted view (default 1)"},
       {"center", "X,Y", "centre of the view in metres (implies --camera center)"},
-      {"layers", "a,b,...", "draw exactly these layers (default: all but nodes,friction,drag); see docs/rendering.md"},
-      {"hide", "a,b,...", "do not draw these layers (applied after --layers)"},
+      {"layers", kListValue, "draw exactly these layers (default: all but nodes,friction,drag); see docs/rendering.md"},
+      {"hide", kListValue, "do not draw these layers (applied after --layers)"},
       {"overlay", "RUN_B", "draw run B's rod at the same time over this run's map (a still or a video)"},
       {"actuation-scale", "PX_PER_N", "magnetic force arrow length per newton (default: automatic)"},
       {"contact-scale", "PX_PER_N", "contact force arrow length per newton (default: automatic)"},
@@ -90,8 +90,6 @@ int run_render_command(int argc, char** argv) {
   if (args.value("still")) o.still = args.number("still", 0, -1e12, 1e12);
   o.png_path = args.value("png").value_or("");
   o.overlay_run = args.value("overlay").value_or("");
-  if (args.value("overlay") && o.overlay_run.empty())
-    throw UsageError("--overlay: expected run B's directory or frame log, got an empty path");
   try {
     if (args.value("center")) {
       o.view.centre = render::parse_centre(*args.value("center"));
