@@ -170,6 +170,10 @@ TEST(DiffCli, ExitCodesAndHeatMap) {
   write_image_png(dir / "c.png", c);
   EXPECT_EQ(run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "c.png") + "'", dir).exit_code, 2);
   EXPECT_EQ(run_vascsim("diff '" + (dir / "a.png") + "' --tolerance x", dir).exit_code, 2);
+  // --force without --out has nothing to replace: said, not ignored.
+  r = run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "a.png") + "' --force", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--force replaces an existing --out file, and no --out was given"), std::string::npos) << r.err;
 
   // The same colours half transparent differ from the opaque original (alpha was dropped).
   // (Written with stb's RGBA encoder: vascsim's own PNGs are opaque RGB.)

@@ -169,6 +169,8 @@ TEST(RenderView, BadViewOptionsExit2NamingTheOption) {
       {"--still 99 --png X", "--still 99: no frame at that time (the log spans 0 .. 1 s)"},
       {"--mp4 v.mp4 --from 5 --to 6", "--from/--to: no frame in the time range"},
       {"--still 0.5 --png ''", "option '--png' needs a value FILE, got an empty one"},
+      {"--still 0.5 --png X --from 0.2 --to 0.4", "--from chooses a video's frames; --still T draws the one picture at T"},
+      {"--still 0.5 --png X --speed 5", "--speed chooses a video's frames"},
   };
   for (const auto& [options, named] : cases) {
     const auto r = testing::run_vascsim("render " + run + " " + options, dir);

@@ -41,6 +41,7 @@ int run_diff_command(int argc, char** argv) {
   const int tolerance = static_cast<int>(args.integer("tolerance", 0, 0, 255));
   const long max_pixels = static_cast<long>(args.integer("max-pixels", 0, 0, 1LL << 40));
   const auto out = args.value("out");
+  if (args.flag("force") && !out) throw UsageError("--force replaces an existing --out file, and no --out was given");
   if (out) check_replaceable_output(*out, args.flag("force"), args.positional());
   const auto different_sizes = [&](std::pair<int, int> a, std::pair<int, int> b) {
     return InputError(args.positional()[0] + " is " + std::to_string(a.first) + "x" + std::to_string(a.second) + ", " +

@@ -88,6 +88,10 @@ int run_render_command(int argc, char** argv) {
   if (args.value("from")) o.from = args.number("from", 0, -1e12, 1e12);
   if (args.value("to")) o.to = args.number("to", 0, -1e12, 1e12);
   if (args.value("still")) o.still = args.number("still", 0, -1e12, 1e12);
+  if (o.still)
+    for (const char* range_option : {"from", "to", "fps", "speed"})
+      if (args.value(range_option))
+        throw UsageError(std::string("--") + range_option + " chooses a video's frames; --still T draws the one picture at T");
   o.png_path = args.value("png").value_or("");
   o.overlay_run = args.value("overlay").value_or("");
   try {
