@@ -58,5 +58,23 @@ TEST(DiskFull, ASweepSaysHowTheRunEndedWhenItsStatusCannotBeWritten) {
   fs::remove_all(dir);
 }
 
+// An export onto a full disk: the small tip/error.csv fits, position.csv does not. The export
+// fails naming the file, and leaves none of its files (tip_error.csv was left, so the export was
+// half done and retrying it needed --force) and no temporary.
+TEST(DiskFull, AnExportLeavesAllItsFilesOrNone) {
+  SmallTmpfs disk("export", 96 * 1024);
+  ASSERT_TRUE(disk.ok()) << disk.error();
+  const std::string dir = fresh_temp_dir("disk_full_export");
+  write_text(dir + "/scene.json", R"({"maze": {"seed": 4}, "rod": {"nodes": 20}, "run": {"duration": 0.5, "output_interval": 0.001}})");
+  ASSERT_EQ(run_vascsim("run " + dir + "/scene.json --out " + dir + "/run --quiet").exit_code, 0);
+  const std::string csv = disk.path() + "/csv";
+  fs::create_directory(csv);
+  const CommandResult r = run_vascsim("export " + dir + "/run --csv " + csv + " --channels tip/error,position");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(csv + "/position.csv: cannot write (No space left on device)"), std::string::npos) << r.output;
+  for (const auto& e : fs::directory_iterator(csv)) ADD_FAILURE() << "left behind: " << e.path();
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace vascsim::test

@@ -81,6 +81,7 @@ std::vector<std::string> export_csv(const FrameLogReader& log, const std::string
   std::vector<std::size_t> offset(channels.size(), 1);  // in doubles, after the time
   for (std::size_t i = 1; i < channels.size(); ++i) offset[i] = offset[i - 1] + channels[i - 1].count;
   std::vector<double> values;
+  OutputFileSet files;  // all of them or none: a failed export leaves no half of itself
   for (std::size_t k = 0; k < chosen.size(); ++k) {
     const LogChannel& c = channels[chosen[k]];
     std::string out = header_of(c);
@@ -105,8 +106,9 @@ std::vector<std::string> export_csv(const FrameLogReader& log, const std::string
         out += "\n";
       }
     }
-    write_file_atomically(paths[k], out);
+    files.add(paths[k], out);
   }
+  files.commit();
   return paths;
 }
 

@@ -25,10 +25,10 @@ std::string csv_file_name(const std::string& channel);
 //   node vectors: "time [s],node,x [unit],y [unit]", one row per frame and node;
 //   a vector:     "time [s],x [unit],y [unit]";
 //   scalars:      "time [s],value [unit]" (one value) or "time [s],index,value [unit]".
-// Values print with 17 significant digits, so they read back to the same doubles. Each file
-// appears complete under its final name or not at all. Throws InputError naming the channel (not
-// in the log) or the file (exists without overwrite, cannot be written) before writing anything
-// where it can. Returns the files written.
+// Values print with 17 significant digits, so they read back to the same doubles. The files
+// appear complete under their final names all together, or none of them. Throws InputError
+// naming the channel (not in the log) or the file (exists without overwrite, cannot be written)
+// before writing anything where it can. Returns the files written.
 std::vector<std::string> export_csv(const FrameLogReader& log, const std::string& dir, const CsvExportOptions& options);
 
 }  // namespace vascsim

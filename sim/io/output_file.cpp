@@ -112,7 +112,11 @@ bool temporary_in_use(const std::string& path) {
   return false;
 }
 
-void write_file_atomically(const std::string& path, const std::string& content) {
+namespace {
+
+// Writes `content` under `path`'s temporary name, flushed to the disk, and returns that name.
+// Throws InputError naming `path`, leaving nothing behind.
+std::string write_temporary(const std::string& path, const std::string& content) {
   const std::string tmp = temporary_sibling(path);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
@@ -126,11 +130,34 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     std::remove(tmp.c_str());
     throw InputError(path + ": cannot write (" + std::strerror(written ? errno : saved_errno) + ")");
   }
+  return tmp;
+}
+
+void rename_into_place(const std::string& tmp, const std::string& path) {
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int e = errno;
     std::remove(tmp.c_str());
     throw InputError(path + ": cannot write (" + std::strerror(e) + ")");
   }
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  rename_into_place(write_temporary(path, content), path);
+}
+
+void OutputFileSet::add(const std::string& path, const std::string& content) {
+  pending_.emplace_back(write_temporary(path, content), path);
+}
+
+void OutputFileSet::commit() {
+  for (const auto& [tmp, path] : pending_) rename_into_place(tmp, path);
+  pending_.clear();
+}
+
+OutputFileSet::~OutputFileSet() {
+  for (const auto& pending : pending_) std::remove(pending.first.c_str());
 }
 
 }  // namespace vascsim

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vascsim {
@@ -18,6 +19,23 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
 // Writes `content` to a temporary file beside `path`, then renames it over `path`.
 // Throws InputError (naming the path and the system's reason) on failure, leaving nothing behind.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+// Files that appear together or not at all (the CSV files of one export): each is written under
+// its temporary name as it is added, and commit() renames them all into place; destroyed before
+// that, the set removes its temporaries, so an error halfway (a full disk) leaves none of them.
+// Throws InputError naming the file that could not be written.
+class OutputFileSet {
+ public:
+  OutputFileSet() = default;
+  OutputFileSet(const OutputFileSet&) = delete;
+  OutputFileSet& operator=(const OutputFileSet&) = delete;
+  ~OutputFileSet();
+  void add(const std::string& path, const std::string& content);
+  void commit();
+
+ private:
+  std::vector<std::pair<std::string, std::string>> pending_;  // (temporary name, final name)
+};
 
 // An exclusive lock on a directory (flock on the directory itself, so no lock file is left in
 // it), held for the object's life: processes that choose or update files there (two replay
