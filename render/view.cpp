@@ -1,9 +1,8 @@
 #include "render/view.h"
 
-#include <cmath>
-#include <cstdlib>
 #include <sstream>
 
+#include "sim/io/decimal_text.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -97,10 +96,9 @@ const char* camera_name(CameraMode mode) {
 Vec2 parse_centre(const std::string& text) {
   const auto parts = split_commas(text);
   auto number = [](const std::string& s, double& out) {
-    if (s.empty() || s.size() > 64) return false;
-    char* end = nullptr;
-    out = std::strtod(s.c_str(), &end);
-    return end == s.c_str() + s.size() && std::isfinite(out);
+    const std::optional<double> x = io::parse_decimal(s);
+    if (x) out = *x;
+    return x.has_value();
   };
   Vec2 c;
   if (parts.size() != 2 || !number(parts[0], c.x()) || !number(parts[1], c.y()))

@@ -1,10 +1,9 @@
 #include "apps/replay/request_params.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
+#include "sim/io/decimal_text.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::replay {
@@ -34,12 +33,9 @@ std::optional<std::string> RequestParams::text(const std::string& name) const {
 std::optional<double> RequestParams::optional_number(const std::string& name, double min, double max) const {
   const auto value = text(name);
   if (!value) return std::nullopt;
-  char* end = nullptr;
-  // Decimal only: strtod would also read " 5" or "0x10" (16).
-  const bool decimal = !value->empty() && value->size() <= 64 && value->find_first_not_of("0123456789+-.eE") == std::string::npos;
-  const double x = decimal ? std::strtod(value->c_str(), &end) : NAN;
-  if (!std::isfinite(x) || end != value->c_str() + value->size())
-    throw ParamError(name, "expected a finite number, got " + quoted(*value));
+  const std::optional<double> parsed = io::parse_decimal(*value);
+  if (!parsed) throw ParamError(name, "expected a finite number, got " + quoted(*value));
+  const double x = *parsed;
   if (x < min || x > max) {
     char range[64];
     std::snprintf(range, sizeof range, "[%g, %g]", min, max);  // not to_string's "[0.001000, 1000.000000]"
@@ -55,11 +51,9 @@ double RequestParams::number(const std::string& name, double fallback, double mi
 long long RequestParams::integer(const std::string& name, long long fallback, long long min, long long max) const {
   const auto value = text(name);
   if (!value) return fallback;
-  char* end = nullptr;
-  const bool digits = !value->empty() && value->size() <= 20 && value->find_first_not_of("0123456789-") == std::string::npos;
-  const long long x = digits ? std::strtoll(value->c_str(), &end, 10) : 0;
-  if (!digits || end != value->c_str() + value->size())
-    throw ParamError(name, "expected an integer, got " + quoted(*value));
+  const std::optional<long long> parsed = io::parse_decimal_integer(*value);
+  if (!parsed) throw ParamError(name, "expected an integer, got " + quoted(*value));
+  const long long x = *parsed;
   if (x < min || x > max)
     throw ParamError(name, "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
                                quoted(*value));

@@ -1,9 +1,8 @@
 #include "apps/vascsim/cli_args.h"
 
-#include <cerrno>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
+
+#include "sim/io/decimal_text.h"
 
 namespace vascsim::cli {
 
@@ -53,29 +52,23 @@ std::optional<std::string> Args::value(const std::string& name) const {
 double Args::number(const std::string& name, double fallback, double min, double max) const {
   auto v = value(name);
   if (!v) return fallback;
-  char* end = nullptr;
-  errno = 0;
-  const double x = std::strtod(v->c_str(), &end);
-  // strtod also reads hexadecimal ("0x10" is 16): not what anyone types for seconds or metres.
-  const bool hexadecimal = v->find_first_of("xX") != std::string::npos;
-  if (v->empty() || *end != '\0' || errno != 0 || hexadecimal || !std::isfinite(x) || x < min || x > max) {
+  const std::optional<double> x = io::parse_decimal(*v);
+  if (!x || *x < min || *x > max) {
     char range[64];
     std::snprintf(range, sizeof range, "[%g, %g]", min, max);
     throw UsageError("--" + name + ": expected a number in " + range + ", got '" + *v + "'");
   }
-  return x;
+  return *x;
 }
 
 long long Args::integer(const std::string& name, long long fallback, long long min, long long max) const {
   auto v = value(name);
   if (!v) return fallback;
-  char* end = nullptr;
-  errno = 0;
-  const long long x = std::strtoll(v->c_str(), &end, 10);
-  if (v->empty() || *end != '\0' || errno != 0 || x < min || x > max)
+  const std::optional<long long> x = io::parse_decimal_integer(*v);
+  if (!x || *x < min || *x > max)
     throw UsageError("--" + name + ": expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
                      "], got '" + *v + "'");
-  return x;
+  return *x;
 }
 
 std::string format_options(const std::vector<OptionSpec>& options) {
