@@ -66,6 +66,29 @@ TEST(VesselMaskPng, RefusesAnImageOverTheSizeLimit) {
   EXPECT_NE(msg.find("1 x 8193 px, larger than 8192 px a side"), std::string::npos) << msg;
 }
 
+// A PNG of no pixels, or claiming more than kMaxPngPixels, is refused saying so (stb_image
+// refused both as "unknown image type"); read with no side limit, as `vascsim diff` reads.
+TEST(VesselMaskPng, AnEmptyOrHugeImageIsRefusedBySize) {
+  const std::string empty = png_bytes(0, 0, 0, {});
+  std::string huge = png_bytes(1, 1, 0, {0});
+  for (const int at : {16, 20}) {  // IHDR's width and height, big-endian: 100000 px each
+    for (int k = 0; k < 4; ++k) huge[at + k] = static_cast<char>((100000u >> (24 - 8 * k)) & 0xFF);
+  }
+  const std::uint32_t crc = test::crc32_of(huge.substr(12, 17));  // IHDR's type and data
+  for (int k = 0; k < 4; ++k) huge[29 + k] = static_cast<char>((crc >> (24 - 8 * k)) & 0xFF);
+  const std::pair<std::string, std::string> cases[] = {
+      {empty, "empty.png: the image is 0 x 0 px: no pixel"},
+      {huge, "huge.png: the image is 100000 x 100000 px: more than the 268435456 px read"}};
+  for (const auto& [bytes, expected] : cases) {
+    try {
+      decode_png(bytes, expected.substr(0, expected.find(':')), 4);
+      ADD_FAILURE() << "accepted " << expected;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), expected);
+    }
+  }
+}
+
 TEST(VesselMaskPng, RefusesMissingAndNonPngFilesNamingThem) {
   const std::string dir = test::fresh_temp_dir("vessel_mask_png_bad");
   test::write_text(dir + "/mask.png", "P2 2 2 255 0 0 0 0\n");  // a PGM, not a PNG

@@ -25,8 +25,11 @@ void put_big_endian_u32(std::string& s, std::uint32_t v) {
   for (int shift = 24; shift >= 0; shift -= 8) s.push_back(static_cast<char>((v >> shift) & 0xFF));
 }
 
-// Where a palette image's colours are: what the palette check needs from the container.
+// What the checks after the container's need from it: the image's size, and where a palette
+// image's colours are.
 struct PaletteChunk {
+  bool has_header = false;              // an IHDR chunk was read
+  std::uint32_t width = 0, height = 0;  // px, IHDR
   bool indexed = false;        // IHDR colour type 3
   int bit_depth = 0;           // bits per index
   std::size_t at = 0;          // offset of the PLTE chunk (its length field)
@@ -52,6 +55,9 @@ PaletteChunk check_png_container(const std::string& bytes, const std::string& pa
     if (crc != big_endian_u32(b + at + 8 + length))
       throw InputError(path + ": damaged PNG (bad CRC in chunk " + type + " at offset " + std::to_string(at) + ")");
     if (type == "IHDR" && length >= 10) {
+      palette.has_header = true;
+      palette.width = big_endian_u32(b + at + 8);
+      palette.height = big_endian_u32(b + at + 12);
       palette.bit_depth = b[at + 16];
       palette.indexed = b[at + 17] == 3;
     }
@@ -161,6 +167,12 @@ PngPixels decode_png(const std::string& bytes, const std::string& label, int cha
   const int size = static_cast<int>(bytes.size());  // <= kMaxPngBytes, fits an int
   int w = 0, h = 0, comp = 0;
   // The header's size first: a small file can claim a huge image, and decoding allocates it.
+  // Said here in pixels: stb_image refuses both an empty image and a huge one as "unknown image
+  // type".
+  const std::uint64_t pixels = std::uint64_t{palette.width} * palette.height;
+  if (palette.has_header && (pixels == 0 || pixels > kMaxPngPixels))
+    throw InputError(label + ": the image is " + std::to_string(palette.width) + " x " + std::to_string(palette.height) +
+                     " px: " + (pixels == 0 ? "no pixel" : "more than the " + std::to_string(kMaxPngPixels) + " px read"));
   if (!stbi_info_from_memory(raw, size, &w, &h, &comp)) throw InputError(decode_failure(label));
   if (max_side > 0 && (w > max_side || h > max_side))
     throw InputError(label + ": the image is " + std::to_string(w) + " x " + std::to_string(h) +

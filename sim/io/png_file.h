@@ -14,6 +14,8 @@ namespace vascsim::io {
 
 // Largest PNG file read, in bytes (256 MB): bigger is not an image vascsim wrote or needs.
 inline constexpr std::size_t kMaxPngBytes = std::size_t(256) << 20;
+// Most pixels read from a PNG (2^28: 1 GB decoded as RGBA), about eight of the largest video frames.
+inline constexpr std::uint64_t kMaxPngPixels = std::uint64_t(1) << 28;
 // Largest width or height (px) of a mask image: 8192^2 pixels is ~0.5 GB of tracing arrays.
 inline constexpr int kMaxMaskSide = 8192;
 
