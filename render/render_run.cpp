@@ -54,6 +54,21 @@ std::string dropped_note(const Canvas& canvas) {
          " vertices) were not drawn (a path, walls or lumen of millions of points in the log?)";
 }
 
+// Run B from another environment is drawn over this run's map, where its rod means nothing:
+// most likely the wrong run was named. Said, not refused: two variants of one vessel compare.
+std::string overlay_environment_note(const FrameSource& source, const FrameSource& overlay, const std::string& overlay_run) {
+  const LogMetadata &a = source.metadata(), &b = overlay.metadata();
+  const auto same_wall = [](const WallSegment& p, const WallSegment& q) {
+    return p.a == q.a && p.b == q.b && p.thickness == q.thickness;
+  };
+  if (a.bounds.min == b.bounds.min && a.bounds.max == b.bounds.max && a.lumen == b.lumen &&
+      std::equal(a.walls.begin(), a.walls.end(), b.walls.begin(), b.walls.end(), same_wall))
+    return "";
+  return "warning: " + overlay_run + " ran in another environment (its walls or lumen differ from this run's): its rod is drawn over this run's map";
+}
+
+std::string joined_notes(const std::string& a, const std::string& b) { return a.empty() || b.empty() ? a + b : a + "; " + b; }
+
 // `vascsim render RUN --still T --png FILE`: one view, the same pixels the replay server sends.
 RenderReport render_still(const FrameSource& source, const FrameSource* overlay, const std::vector<std::string>& inputs,
                           const RenderOptions& o) {
@@ -69,7 +84,7 @@ RenderReport render_still(const FrameSource& source, const FrameSource* overlay,
   write_png(o.png_path, rgba.data(), o.view.width, o.view.height);
   RenderReport report;
   report.frames = 1;
-  report.note = dropped_note(canvas);
+  report.note = joined_notes(overlay ? overlay_environment_note(source, *overlay, o.overlay_run) : "", dropped_note(canvas));
   return report;
 }
 
@@ -235,8 +250,8 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
     report.video_codec = video->codec();
     report.note = video->note();
   }
-  if (const std::string dropped = dropped_note(canvas); !dropped.empty())
-    report.note += (report.note.empty() ? "" : "; ") + dropped;
+  if (overlay) report.note = joined_notes(report.note, overlay_environment_note(source, *overlay, o.overlay_run));
+  report.note = joined_notes(report.note, dropped_note(canvas));
   report.frames = count;
   return report;
 }

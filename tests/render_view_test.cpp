@@ -147,6 +147,16 @@ TEST(RenderView, AnOverlaidRunIsAnInput) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("warning: " + stopped + " has no summary.json"), std::string::npos) << r.err;
 
+  EXPECT_EQ(r.err.find("another environment"), std::string::npos) << r.err;
+
+  // A run of another maze over this one's map: drawn, with a warning (most likely the wrong run).
+  SyntheticLogSpec other;
+  other.grid = 4;
+  const std::string elsewhere = testing::make_run(dir, other, "elsewhere");
+  r = testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --png " + (dir / "e.png") + " --overlay " + elsewhere, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: " + elsewhere + " ran in another environment"), std::string::npos) << r.err;
+
   r = testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --png " + (dir / "c.png") + " --overlay ''", dir);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.err.find("option '--overlay' needs a value RUN_B, got an empty one"), std::string::npos) << r.err;
