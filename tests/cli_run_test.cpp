@@ -165,12 +165,50 @@ TEST(CliRun, TinyOutputIntervalsAndHugeLogsAreRefusedUpFront) {
   r = run_vascsim("run " + dir + "/maze.json --out " + dir + "/f --quiet --max-log-size " + std::to_string(size));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(fs::file_size(dir + "/f/frames.vlog"), size);
+  // A duration between two output times ends with a frame at the duration, and one that the
+  // quotient rounds below a whole number (0.03 / 0.01) with one at the last multiple: the limit
+  // counts those frames too (the log of 0.025 s took one frame more than the limit allowed).
+  for (const std::string duration : {"0.025", "0.03"}) {
+    write_text(dir + "/odd.json", R"({"maze": null, "rod": {"nodes": 10}, "run": {"duration": )" + duration +
+                                      R"(, "output_interval": 0.01}})");
+    fs::remove_all(dir + "/h");
+    r = run_vascsim("run " + dir + "/odd.json --out " + dir + "/h --quiet");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto odd_size = fs::file_size(dir + "/h/frames.vlog");
+    r = run_vascsim("run " + dir + "/odd.json --out " + dir + "/i --quiet --max-log-size " + std::to_string(odd_size - 1));
+    EXPECT_EQ(r.exit_code, 2) << duration << ": " << r.output;
+    EXPECT_NE(r.output.find("and 4 frames of "), std::string::npos) << duration << ": " << r.output;
+  }
   // Whole bytes, or k, M, G: not hexadecimal, exponents or fractions of a byte.
   for (const char* size_text : {"0x10", "1e6", "0.5", "1.0001k", "-5", "0", "5 M"}) {
     r = run_vascsim("run " + dir + "/short.json --out " + dir + "/g --max-log-size '" + size_text + "'");
     EXPECT_EQ(r.exit_code, 2) << size_text << ": " << r.output;
     EXPECT_NE(r.output.find("--max-log-size: expected a whole number of bytes"), std::string::npos) << size_text << ": " << r.output;
   }
+  fs::remove_all(dir);
+}
+
+// What a run would write over is checked before it simulates: the scene itself under an output's
+// name (a forced run replaced it with its summary or log, or deleted it as its video), or a
+// directory in the way (found after the whole simulation).
+TEST(CliRun, TheSceneAndDirectoriesInTheWayAreRefusedBeforeSimulating) {
+  const std::string dir = fresh_temp_dir("run_outputs_in_the_way");
+  const std::string scene = R"({"maze": null, "rod": {"nodes": 10}, "run": {"duration": 0.05}})";
+  for (const char* name : {"summary.json", "frames.vlog", "video.mp4"}) {
+    const std::string out = dir + "/" + name + "_dir";
+    fs::create_directories(out);
+    write_text(out + "/" + name, scene);
+    const CommandResult r = run_vascsim("run " + out + "/" + name + " --out " + out + " --quiet --force --render");
+    EXPECT_EQ(r.exit_code, 2) << name << ": " << r.output;
+    EXPECT_NE(r.output.find(out + "/" + name + ": is the scene being run; refusing to replace it"), std::string::npos) << r.output;
+    EXPECT_EQ(read_text(out + "/" + name), scene) << name << ": the scene was replaced";
+  }
+  write_text(dir + "/scene.json", scene);
+  fs::create_directories(dir + "/blocked/summary.json/inside");
+  const CommandResult r = run_vascsim("run " + dir + "/scene.json --out " + dir + "/blocked --quiet --force");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("blocked/summary.json: exists and is not a regular file"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/blocked/frames.vlog")) << "simulated before refusing";
   fs::remove_all(dir);
 }
 

@@ -96,6 +96,24 @@ void remove_run_outputs(const std::string& dir) {
                  name.c_str());
 }
 
+// What a run writes into an existing DIR, checked before it simulates: the scene being run under
+// one of those names (a --force run replaced it with its summary or log, or deleted it as a
+// video), or a directory in the way, failed only after the whole simulation, or not at all. A
+// symbolic link there is replaced, not written through, so it may point anywhere.
+void check_run_outputs(const std::string& dir, const std::string& scene_path, bool video) {
+  std::vector<std::string> names = {"frames.vlog", "summary.json"};
+  if (video) names.push_back("video.mp4");
+  for (const std::string& name : names) {
+    const std::string path = (fs::path(dir) / name).string();
+    std::error_code ec;
+    const fs::file_status status = fs::symlink_status(path, ec);
+    if (!fs::exists(status) || fs::is_symlink(status)) continue;
+    if (!fs::is_regular_file(status)) throw InputError(path + ": exists and is not a regular file; refusing to replace it");
+    if (fs::equivalent(path, scene_path, ec))
+      throw InputError(path + ": is the scene being run; refusing to replace it (choose another --out)");
+  }
+}
+
 // Bytes from "10G", "500M", "20000000": a whole number of bytes, or of k, M, G (powers of
 // 1000), which may have a fraction ("1.5G"). Not strtod's hexadecimal or exponents.
 double max_log_size(const Args& args) {
@@ -124,8 +142,9 @@ std::string size_text(double bytes) {
 
 // The frame log's size is known before the run: its header (channels, and the scene and walls
 // it carries) and fixed-size records at the output interval.
-void check_log_size(const Scene& scene, const FrameLogHeader& header, double limit) {
-  const double frames = scene.solver.mode == SolveMode::kStatic ? 2 : std::floor(scene.run.duration / scene.run.output_interval) + 1;
+void check_log_size(const Run& run, const FrameLogHeader& header, double limit) {
+  const Scene& scene = run.scene();
+  const double frames = run.planned_frames();
   const double record = static_cast<double>(header.record_doubles()) * 8;
   const double head = static_cast<double>(frame_log_header_bytes(header));
   const double bytes = head + frames * record;
@@ -165,7 +184,7 @@ int run_run_command(int argc, char** argv) {
   const Scene& scene = run.scene();  // as resolved: the duration a maze scene runs, the rod at the entry
   warn_unused_fields("run", input);
   const FrameLogHeader log_header = run_log_header(run);
-  check_log_size(scene, log_header, max_log_size(args));
+  check_log_size(run, log_header, max_log_size(args));
 
   // Refuse to mix a new run into a directory holding someone's files.
   std::error_code ec;
@@ -173,6 +192,7 @@ int run_run_command(int argc, char** argv) {
     if (!fs::is_directory(*out, ec)) throw InputError(*out + ": exists and is not a directory");
     if (!fs::is_empty(*out, ec) && !args.flag("force"))
       throw InputError(*out + ": directory is not empty (pass --force to replace its run files)");
+    check_run_outputs(*out, args.positional().front(), args.flag("render"));
     remove_run_outputs(*out);
   } else if (!fs::create_directories(*out, ec)) {
     throw InputError(*out + ": cannot create directory (" + ec.message() + ")");

@@ -235,6 +235,18 @@ double Run::output_time(std::size_t frame) const {
   return std::min(scene_.run.duration, static_cast<double>(frame) * scene_.run.output_interval);
 }
 
+double Run::planned_frames() const {
+  if (scene_.solver.mode == SolveMode::kStatic) return 2;
+  // The last frame is the first k whose k * interval reaches the duration, found by the product
+  // output_time compares, not by the quotient's rounding (0.03 / 0.01 is 2.9999999999999996).
+  const double interval = scene_.run.output_interval, duration = scene_.run.duration;
+  // A step or two either way at most (bounded: past 2^53 frames an increment changes nothing).
+  double last = std::floor(duration / interval);
+  for (int k = 0; k < 4 && last * interval < duration; ++k) ++last;
+  for (int k = 0; k < 4 && last > 0 && (last - 1) * interval >= duration; ++k) --last;
+  return last + 1;
+}
+
 bool Run::frames_interpolable(const State& start, const Controls& controls, std::size_t frame) const {
   for (double t_out = output_time(frame); t_out < state_.t * (1.0 - 1e-12); t_out = output_time(++frame)) {
     const State at = interpolate_in_step(start, state_, t_out);

@@ -101,6 +101,9 @@ class Run {
   const State& state() const { return state_; }
   const Navigation* navigation() const { return model_->navigation.get(); }
   const RunStatistics& statistics() const { return stats_; }
+  // The frames a run that completes writes: 2 for a static solve; else t = 0, every output
+  // interval, and one at the duration if it falls between two (as output_time spaces them).
+  double planned_frames() const;
 
   // Runs until scene.run.duration (or the first failure), writing a frame at t = 0 and every
   // output interval. `progress` (may be empty) is called after each frame with t.
