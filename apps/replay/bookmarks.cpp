@@ -46,7 +46,7 @@ json load_bookmark_file(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return json{{"format", "vascsim-bookmarks/1"}, {"bookmarks", json::array()}};
   if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > (16u << 20))
-    throw InputError(path + ": not a bookmarks file (not a regular file of at most 16 MB); left untouched");
+    throw InputError(path + ": not a bookmarks file (not a regular file of at most 16 MiB); left untouched");
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();

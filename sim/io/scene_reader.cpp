@@ -105,7 +105,7 @@ Scene read_scene_file(const std::string& path) {
   const std::string text = io::read_at_most(file, kMaxSceneBytes);
   if (file.bad()) throw InputError(path + ": cannot read scene file");
   if (text.size() > kMaxSceneBytes)
-    throw InputError(path + ": larger than " + std::to_string(kMaxSceneBytes >> 20) + " MB, the limit for a scene file");
+    throw InputError(path + ": larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB, the limit for a scene file");
   return read_scene_text(text, path);
 }
 
