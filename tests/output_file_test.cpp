@@ -59,6 +59,20 @@ TEST(OutputFile, StaleTemporariesOfDeadProcessesAreRemovedOthersKept) {
   fs::remove_all(dir);
 }
 
+// A run directory holding only what a stopped render left under temporary names is empty to the
+// next run (it was refused as "not empty" without --force, though the leftovers are no one's).
+TEST(OutputFile, ARunDirectoryHoldingOnlyStaleTemporariesIsEmptyToTheNextRun) {
+  const std::string dir = test::fresh_temp_dir("stale_run_dir");
+  test::write_text(dir + "/scene.json", R"({"maze": null, "rod": {"nodes": 10}, "run": {"duration": 0.02}})");
+  fs::create_directories(dir + "/run");
+  const std::string stale = temporary_of(dir + "/run/video.mp4", dead_pid());
+  touch(stale);
+  const test::CommandResult r = test::run_vascsim("run " + dir + "/scene.json --out " + dir + "/run --quiet");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_FALSE(fs::exists(stale));
+  fs::remove_all(dir);
+}
+
 TEST(OutputFile, WriteFileAtomicallyLeavesOnlyTheFinalName) {
   const std::string dir = test::fresh_temp_dir("atomic_write");
   write_file_atomically(dir + "/a.json", "{}");

@@ -190,6 +190,9 @@ int run_run_command(int argc, char** argv) {
   std::error_code ec;
   if (fs::exists(*out, ec)) {
     if (!fs::is_directory(*out, ec)) throw InputError(*out + ": exists and is not a directory");
+    // A killed earlier run's or render's temporaries first: they are no one's files, and a
+    // directory holding only them was refused as not empty.
+    remove_stale_temporaries(*out);
     if (!fs::is_empty(*out, ec) && !args.flag("force"))
       throw InputError(*out + ": directory is not empty (pass --force to replace its run files)");
     check_run_outputs(*out, args.positional().front(), args.flag("render"));
@@ -198,7 +201,6 @@ int run_run_command(int argc, char** argv) {
     throw InputError(*out + ": cannot create directory (" + ec.message() + ")");
   }
 
-  remove_stale_temporaries(*out);  // a killed earlier run's summary.json under its temporary name
 
   const std::string log_path = (fs::path(*out) / "frames.vlog").string();
   FrameLogWriter writer(log_path, log_header);
