@@ -58,7 +58,7 @@ TEST(BoundedRead, OversizedSceneAndSweepFilesAreRefusedByName) {
     std::ofstream(path, std::ios::binary) << "{}" << std::string(limit - 1, ' ');
     const std::string message = error_reading(path, sweep);
     EXPECT_NE(message.find(path), std::string::npos) << message;
-    EXPECT_NE(message.find("larger than " + std::to_string(limit >> 20) + " MB"), std::string::npos) << message;
+    EXPECT_NE(message.find("larger than " + std::to_string(limit >> 20) + " MiB"), std::string::npos) << message;
     // At the cap it is read (and then judged on its content).
     std::ofstream(path, std::ios::binary | std::ios::trunc) << "{}" << std::string(limit - 2, ' ');
     EXPECT_EQ(error_reading(path, sweep).find("larger than"), std::string::npos);
@@ -84,9 +84,9 @@ TEST(BoundedRead, OversizedPngAndManifestAreRefusedByName) {
     return "accepted";
   };
   const std::string png_error = message_of([&] { io::read_png(png, 1); });
-  EXPECT_NE(png_error.find(png + ": cannot read PNG (larger than 256 MB)"), std::string::npos) << png_error;
+  EXPECT_NE(png_error.find(png + ": cannot read PNG (larger than 256 MiB)"), std::string::npos) << png_error;
   const std::string manifest_error = message_of([&] { read_sweep_manifest(manifest); });
-  EXPECT_NE(manifest_error.find(manifest + ": larger than 256 MB"), std::string::npos) << manifest_error;
+  EXPECT_NE(manifest_error.find(manifest + ": larger than 256 MiB"), std::string::npos) << manifest_error;
   std::filesystem::remove_all(dir);
 }
 

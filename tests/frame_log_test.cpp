@@ -124,7 +124,7 @@ TEST(FrameLog, MetadataIsBoundedOnWriteAndOnRead) {
     FrameLogWriter w(path, h);
     ADD_FAILURE() << "wrote metadata over the limit";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("32 MB"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("32 MiB"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(std::filesystem::exists(path)) << "a refused log must not appear";
   // A header whose metadata length says 1 GB: patch a small valid log's length field.
@@ -144,7 +144,7 @@ TEST(FrameLog, MetadataIsBoundedOnWriteAndOnRead) {
     FrameLogReader r(path);
     ADD_FAILURE() << "accepted a 1 GB metadata length";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("exceeds the 32 MB limit"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("exceeds the 32 MiB limit"), std::string::npos) << e.what();
   }
   std::remove(path.c_str());
 }

@@ -79,7 +79,7 @@ std::string read_png_bytes(const std::string& path) {
   if (!std::filesystem::exists(status)) throw InputError(path + ": cannot read PNG (no such file)");
   if (!std::filesystem::is_regular_file(status)) throw InputError(path + ": cannot read PNG (not a regular file)");
   if (std::filesystem::file_size(path, ec) > kMaxPngBytes)
-    throw InputError(path + ": cannot read PNG (larger than " + std::to_string(kMaxPngBytes >> 20) + " MB)");
+    throw InputError(path + ": cannot read PNG (larger than " + std::to_string(kMaxPngBytes >> 20) + " MiB)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot read PNG (cannot open it)");
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -161,7 +161,7 @@ PngPixels read_png(const std::string& path, int channels, int max_side) {
 
 PngPixels decode_png(const std::string& bytes, const std::string& label, int channels, int max_side) {
   if (bytes.size() > kMaxPngBytes)
-    throw InputError(label + ": cannot read PNG (larger than " + std::to_string(kMaxPngBytes >> 20) + " MB)");
+    throw InputError(label + ": cannot read PNG (larger than " + std::to_string(kMaxPngBytes >> 20) + " MiB)");
   const PaletteChunk palette = check_png_container(bytes, label);
   const auto* raw = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = static_cast<int>(bytes.size());  // <= kMaxPngBytes, fits an int

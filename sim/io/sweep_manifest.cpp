@@ -77,7 +77,7 @@ SweepManifest read_sweep_manifest(const std::string& path) {
   // The size first: a buffer of the limit would cost more than reading a typical manifest.
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec || size > kMaxManifestBytes)
-    throw InputError(path + ": larger than " + std::to_string(kMaxManifestBytes >> 20) + " MB, the limit for a sweep manifest");
+    throw InputError(path + ": larger than " + std::to_string(kMaxManifestBytes >> 20) + " MiB, the limit for a sweep manifest");
   std::string text(static_cast<std::size_t>(size), '\0');
   f.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (static_cast<std::uintmax_t>(f.gcount()) != size) throw InputError(path + ": cannot read the sweep manifest");

@@ -209,7 +209,7 @@ SweepSpec read_sweep_file(const std::string& path) {
   const std::string text = io::read_at_most(file, kMaxSweepFileBytes);
   if (file.bad()) throw InputError(path + ": cannot read sweep file");
   if (text.size() > kMaxSweepFileBytes)
-    throw InputError(path + ": larger than " + std::to_string(kMaxSweepFileBytes >> 20) + " MB, the limit for a sweep file");
+    throw InputError(path + ": larger than " + std::to_string(kMaxSweepFileBytes >> 20) + " MiB, the limit for a sweep file");
   return read_sweep_text(text, path);
 }
 

@@ -102,7 +102,7 @@ FrameLogWriter::FrameLogWriter(const std::string& path, const FrameLogHeader& he
   // Checked before the file exists: a log its readers refuse must not be written at all.
   if (header_.metadata.size() > kMaxMetadataBytes)
     throw InputError(path + ": frame log metadata of " + std::to_string(header_.metadata.size()) + " bytes exceeds the " +
-                     std::to_string(kMaxMetadataBytes >> 20) + " MB limit (a path or wall list too finely sampled?)");
+                     std::to_string(kMaxMetadataBytes >> 20) + " MiB limit (a path or wall list too finely sampled?)");
   file_ = std::fopen(path.c_str(), "wb");
   if (!file_) throw InputError(path + ": cannot create frame log (" + std::strerror(errno) + ")");
   // Closed if the header cannot be written (a full disk): the destructor does not run for a
@@ -224,7 +224,7 @@ void FrameLogReader::read_header() {
   const std::uint32_t metadata_bytes = in.u32();
   if (metadata_bytes > kMaxMetadataBytes)
     throw InputError(path + ": frame log metadata of " + std::to_string(metadata_bytes) + " bytes exceeds the " +
-                     std::to_string(kMaxMetadataBytes >> 20) + " MB limit");
+                     std::to_string(kMaxMetadataBytes >> 20) + " MiB limit");
   header_.metadata.assign(metadata_bytes, '\0');
   if (metadata_bytes) in.bytes(header_.metadata.data(), metadata_bytes);
   data_offset_ = (in.consumed() + 7) / 8 * 8;
