@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
 extern "C" {
@@ -22,6 +23,7 @@ namespace vascsim::render {
 struct VideoEncoder::Impl {
   VideoSettings settings;
   std::string final_path, temp_path, codec_name, note;
+  std::unique_ptr<RemovedOnSignal> temp_guard;  // Ctrl-C or kill mid-render leaves no temporary
   AVFormatContext* format = nullptr;
   AVCodecContext* codec = nullptr;
   AVStream* stream = nullptr;
@@ -80,9 +82,10 @@ VideoEncoder::VideoEncoder(const std::string& path, const VideoSettings& setting
     m.note = "H.264 (libx264) is not available in this libavcodec; wrote VP9 in WebM instead: " + m.final_path;
   }
   m.codec_name = encoder == nullptr ? "" : (std::string(container) == "mp4" ? "h264" : "vp9");
-  // Hidden and unique to this process; a render killed before its rename leaves it for the next
-  // render into this directory to remove (sim/io/output_file.h).
+  // Hidden and unique to this process; removed if Ctrl-C or kill stops the render, and left by
+  // kill -9 for the next render into this directory to remove (sim/io/output_file.h).
   m.temp_path = temporary_sibling(m.final_path);
+  m.temp_guard = std::make_unique<RemovedOnSignal>(m.temp_path);
 
   if (avformat_alloc_output_context2(&m.format, nullptr, container, m.temp_path.c_str()) < 0 || !m.format)
     throw std::runtime_error(std::string("libavformat has no ") + container + " muxer");

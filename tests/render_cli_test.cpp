@@ -2,8 +2,12 @@
 // truncated log, unwritable destination, bad options) exits 2 with a message naming the
 // problem and leaves no file under a final name, and existing outputs need --force.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <csignal>
 #include <fstream>
 
 #include "render/image_diff.h"
@@ -136,6 +140,41 @@ TEST(RenderCli, BadOptionsExit2) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find(" fps and speed 1e-09 makes "), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("0.000000"), std::string::npos) << r.err;
+}
+
+// A render stopped by Ctrl-C or kill leaves no temporary behind (its video's was left for the
+// next render into the directory to remove), and the signal still ends it.
+TEST(RenderCli, ARenderStoppedBySignalLeavesNoTemporary) {
+  ScratchDir dir("cli_render_signal");
+  SyntheticLogSpec spec;
+  spec.frames = 2000;
+  spec.duration = 200;  // s: 6000 video frames, far more than the test waits for
+  const std::string run = testing::make_run(dir, spec);
+  const std::string video = dir / "v.mp4";
+  const auto temporaries = [&] {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(dir.path())) n += e.path().filename().string().rfind(".v.mp4.tmp-", 0) == 0;
+    return n;
+  };
+  for (const int signal : {SIGINT, SIGTERM}) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      const int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, 1);
+      ::dup2(null, 2);
+      ::execl(VASCSIM_EXE, VASCSIM_EXE, "render", run.c_str(), "--mp4", video.c_str(), "--width", "160", "--height", "120",
+              "--quiet", static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    for (int k = 0; k < 3000 && temporaries() == 0; ++k) ::usleep(10000);  // up to 30 s
+    ASSERT_EQ(temporaries(), 1) << "the render never started its video";
+    ::kill(pid, signal);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << "status " << status;
+    EXPECT_EQ(temporaries(), 0) << "signal " << signal;
+    EXPECT_FALSE(fs::exists(video));
+  }
 }
 
 // A width x height image of one grey level.

@@ -5,10 +5,13 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 
 #include "sim/scene/input_error.h"
 
@@ -114,10 +117,9 @@ bool temporary_in_use(const std::string& path) {
 
 namespace {
 
-// Writes `content` under `path`'s temporary name, flushed to the disk, and returns that name.
-// Throws InputError naming `path`, leaving nothing behind.
-std::string write_temporary(const std::string& path, const std::string& content) {
-  const std::string tmp = temporary_sibling(path);
+// Writes `content` to `tmp`, `path`'s temporary name, flushed to the disk. Throws InputError
+// naming `path`, leaving nothing behind.
+void write_temporary(const std::string& tmp, const std::string& path, const std::string& content) {
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
   // Flushed to the disk before the rename: after a power cut the final name holds the old
@@ -130,7 +132,6 @@ std::string write_temporary(const std::string& path, const std::string& content)
     std::remove(tmp.c_str());
     throw InputError(path + ": cannot write (" + std::strerror(written ? errno : saved_errno) + ")");
   }
-  return tmp;
 }
 
 void rename_into_place(const std::string& tmp, const std::string& path) {
@@ -144,20 +145,80 @@ void rename_into_place(const std::string& tmp, const std::string& path) {
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::string& content) {
-  rename_into_place(write_temporary(path, content), path);
+  const std::string tmp = temporary_sibling(path);
+  RemovedOnSignal guard(tmp);
+  write_temporary(tmp, path, content);
+  rename_into_place(tmp, path);
 }
 
 void OutputFileSet::add(const std::string& path, const std::string& content) {
-  pending_.emplace_back(write_temporary(path, content), path);
+  const std::string tmp = temporary_sibling(path);
+  auto guard = std::make_unique<RemovedOnSignal>(tmp);
+  write_temporary(tmp, path, content);
+  pending_.push_back({tmp, path, std::move(guard)});
 }
 
 void OutputFileSet::commit() {
-  for (const auto& [tmp, path] : pending_) rename_into_place(tmp, path);
+  for (const Pending& p : pending_) rename_into_place(p.temporary, p.final);
   pending_.clear();
 }
 
 OutputFileSet::~OutputFileSet() {
-  for (const auto& pending : pending_) std::remove(pending.first.c_str());
+  for (const Pending& p : pending_) std::remove(p.temporary.c_str());
+}
+
+namespace {
+
+// The names RemovedOnSignal guards, in fixed storage a signal handler may read: a slot is free
+// (0), being filled or emptied (1), or holds a name to remove (2).
+struct GuardedName {
+  std::atomic<int> state{0};
+  char path[4096];
+};
+GuardedName g_guarded[64];
+constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+extern "C" void remove_guarded_names(int signal) {
+  for (GuardedName& g : g_guarded)
+    if (g.state.load() == 2) ::unlink(g.path);  // async-signal-safe
+  ::signal(signal, SIG_DFL);
+  ::raise(signal);
+}
+
+// Only where the signal would end the process: a program that handles one itself (the replay
+// server's Ctrl-C, a sweep stopping its runs) goes on after it, and its temporaries with it.
+void install_cleanup_handlers() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (const int signal : kCleanupSignals) {
+      struct sigaction before {};
+      ::sigaction(signal, nullptr, &before);
+      if ((before.sa_flags & SA_SIGINFO) || before.sa_handler != SIG_DFL) continue;
+      struct sigaction ours {};
+      ours.sa_handler = remove_guarded_names;
+      sigemptyset(&ours.sa_mask);
+      ::sigaction(signal, &ours, nullptr);
+    }
+  });
+}
+
+}  // namespace
+
+RemovedOnSignal::RemovedOnSignal(const std::string& path) {
+  if (path.size() >= sizeof g_guarded[0].path) return;
+  install_cleanup_handlers();
+  for (int k = 0; k < 64; ++k) {
+    int free = 0;
+    if (!g_guarded[k].state.compare_exchange_strong(free, 1)) continue;
+    std::memcpy(g_guarded[k].path, path.c_str(), path.size() + 1);
+    g_guarded[k].state.store(2);
+    slot_ = k;
+    return;
+  }
+}
+
+RemovedOnSignal::~RemovedOnSignal() {
+  if (slot_ >= 0) g_guarded[slot_].state.store(0);
 }
 
 }  // namespace vascsim

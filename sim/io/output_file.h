@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,22 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
 // Throws InputError (naming the path and the system's reason) on failure, leaving nothing behind.
 void write_file_atomically(const std::string& path, const std::string& content);
 
+// While it lives, the temporary name `path` is removed if the process is ended by SIGINT,
+// SIGTERM or SIGHUP (Ctrl-C, kill, a closed terminal), so a stopped render leaves nothing behind
+// (it left its video's temporary for the next writer to find); the signal then ends the process
+// as it would have. Signals the program handles or ignores itself are left to it. Up to 64 names
+// at once (more are left to remove_stale_temporaries, as SIGKILL's always are).
+class RemovedOnSignal {
+ public:
+  explicit RemovedOnSignal(const std::string& path);
+  ~RemovedOnSignal();
+  RemovedOnSignal(const RemovedOnSignal&) = delete;
+  RemovedOnSignal& operator=(const RemovedOnSignal&) = delete;
+
+ private:
+  int slot_ = -1;
+};
+
 // Files that appear together or not at all (the CSV files of one export): each is written under
 // its temporary name as it is added, and commit() renames them all into place; destroyed before
 // that, the set removes its temporaries, so an error halfway (a full disk) leaves none of them.
@@ -34,7 +51,11 @@ class OutputFileSet {
   void commit();
 
  private:
-  std::vector<std::pair<std::string, std::string>> pending_;  // (temporary name, final name)
+  struct Pending {
+    std::string temporary, final;
+    std::unique_ptr<RemovedOnSignal> guard;
+  };
+  std::vector<Pending> pending_;
 };
 
 // An exclusive lock on a directory (flock on the directory itself, so no lock file is left in
@@ -66,5 +87,6 @@ std::string temporary_sibling(const std::string& path);
 std::size_t remove_stale_temporaries(const std::string& dir);
 // Whether a running process on this machine is writing `path` under a temporary name.
 bool temporary_in_use(const std::string& path);
+
 
 }  // namespace vascsim
