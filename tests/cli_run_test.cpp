@@ -1,8 +1,12 @@
 // `vascsim run` as a user drives it: outputs, refusal to overwrite, bad scenes, a diverging run
 // that keeps its frames and says why, and a killed run that leaves a readable log.
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -209,6 +213,40 @@ TEST(CliRun, TheSceneAndDirectoriesInTheWayAreRefusedBeforeSimulating) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("blocked/summary.json: exists and is not a regular file"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir + "/blocked/frames.vlog")) << "simulated before refusing";
+  fs::remove_all(dir);
+}
+
+// Two runs into one directory at once: the second is refused while the first writes (both ran,
+// and one's log was left beside the other's summary). The claim's hidden file goes with the run,
+// also when a signal stops it.
+TEST(CliRun, ASecondRunIntoADirectoryBeingWrittenIsRefused) {
+  const std::string dir = fresh_temp_dir("run_claim");
+  write_text(dir + "/long.json", R"({"maze": null, "rod": {"nodes": 40}, "run": {"duration": 1000}})");
+  write_text(dir + "/short.json", R"({"maze": null, "rod": {"nodes": 10}, "run": {"duration": 0.02}})");
+  const std::string out = dir + "/out";
+  const pid_t first = ::fork();
+  if (first == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 1);
+    ::dup2(null, 2);
+    ::execl(VASCSIM_EXE, VASCSIM_EXE, "run", (dir + "/long.json").c_str(), "--out", out.c_str(), "--quiet",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  for (int k = 0; k < 3000 && !fs::exists(out + "/frames.vlog"); ++k) ::usleep(10000);  // up to 30 s
+  ASSERT_TRUE(fs::exists(out + "/frames.vlog")) << "the first run never started";
+  CommandResult r = run_vascsim("run " + dir + "/short.json --out " + out + " --quiet --force");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(out + ": another vascsim run is writing into this directory"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(out + "/frames.vlog")) << "the second run removed the first one's log";
+  ::kill(first, SIGTERM);
+  int status = 0;
+  ASSERT_EQ(::waitpid(first, &status, 0), first);
+  EXPECT_TRUE(WIFSIGNALED(status)) << status;
+  EXPECT_FALSE(fs::exists(out + "/.vascsim-run.lock")) << "the stopped run left its claim";
+  r = run_vascsim("run " + dir + "/short.json --out " + out + " --quiet --force");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_FALSE(fs::exists(out + "/.vascsim-run.lock"));
   fs::remove_all(dir);
 }
 

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -114,6 +115,14 @@ void check_run_outputs(const std::string& dir, const std::string& scene_path, bo
   }
 }
 
+// Whether `dir` is empty but for an earlier run's claim (RunDirectoryClaim's file).
+bool holds_only_a_claim(const std::string& dir) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.path().filename() != RunDirectoryClaim::kFileName) return false;
+  return true;
+}
+
 // Bytes from "10G", "500M", "20000000": a whole number of bytes, or of k, M, G (powers of
 // 1000), which may have a fraction ("1.5G"). Not strtod's hexadecimal or exponents.
 double max_log_size(const Args& args) {
@@ -188,17 +197,21 @@ int run_run_command(int argc, char** argv) {
 
   // Refuse to mix a new run into a directory holding someone's files.
   std::error_code ec;
+  std::unique_ptr<RunDirectoryClaim> claim;
   if (fs::exists(*out, ec)) {
     if (!fs::is_directory(*out, ec)) throw InputError(*out + ": exists and is not a directory");
     // A killed earlier run's or render's temporaries first: they are no one's files, and a
-    // directory holding only them was refused as not empty.
+    // directory holding only them was refused as not empty; so is an earlier run's claim.
     remove_stale_temporaries(*out);
-    if (!fs::is_empty(*out, ec) && !args.flag("force"))
+    if (!holds_only_a_claim(*out) && !args.flag("force"))
       throw InputError(*out + ": directory is not empty (pass --force to replace its run files)");
+    claim = std::make_unique<RunDirectoryClaim>(*out);
     check_run_outputs(*out, args.positional().front(), args.flag("render"));
     remove_run_outputs(*out);
   } else if (!fs::create_directories(*out, ec)) {
     throw InputError(*out + ": cannot create directory (" + ec.message() + ")");
+  } else {
+    claim = std::make_unique<RunDirectoryClaim>(*out);
   }
 
 

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -42,6 +43,40 @@ DirectoryLock::DirectoryLock(const std::string& dir) {
 }
 
 DirectoryLock::~DirectoryLock() { ::close(fd_); }
+
+RunDirectoryClaim::RunDirectoryClaim(const std::string& dir) : path_((fs::path(dir) / kFileName).string()) {
+  // A run that ends removes its claim's file: one that opened it just before may lock the removed
+  // file, so the lock counts only if the name still leads to the file locked.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ < 0) throw InputError(dir + ": cannot claim the directory for this run (" + path_ + ": " + std::strerror(errno) + ")");
+    int result;
+    while ((result = ::flock(fd_, LOCK_EX | LOCK_NB)) != 0 && errno == EINTR) {
+    }
+    if (result != 0) {
+      const int e = errno;
+      ::close(fd_);
+      fd_ = -1;
+      if (e == EWOULDBLOCK)
+        throw InputError(dir + ": another vascsim run is writing into this directory; wait for it, or choose another --out");
+      throw InputError(dir + ": cannot claim the directory for this run (" + std::strerror(e) + ")");
+    }
+    struct stat locked {}, named {};
+    if (::fstat(fd_, &locked) == 0 && ::stat(path_.c_str(), &named) == 0 && locked.st_ino == named.st_ino &&
+        locked.st_dev == named.st_dev) {
+      guard_ = std::make_unique<RemovedOnSignal>(path_);
+      return;
+    }
+    ::close(fd_);
+    fd_ = -1;
+  }
+  throw InputError(dir + ": cannot claim the directory for this run (other runs keep starting and ending in it)");
+}
+
+RunDirectoryClaim::~RunDirectoryClaim() {
+  ::unlink(path_.c_str());  // before the lock goes, so a waiting run finds the name free or its own
+  ::close(fd_);
+}
 
 void check_replaceable_output(const std::string& path, bool overwrite, const std::vector<std::string>& inputs,
                               const std::string& option_hint) {

@@ -58,6 +58,27 @@ class OutputFileSet {
   std::vector<Pending> pending_;
 };
 
+// The claim of one `vascsim run` on its output directory, held for the object's life: a second
+// run into the directory while the first writes is refused (two at once left one's log beside
+// the other's summary). A lock of its own (flock on the hidden file DIR/.vascsim-run.lock,
+// removed when the claim ends, also by Ctrl-C or kill; kill -9 leaves it, harmless), not
+// DirectoryLock's: a replay server adding a bookmark to a live run must not wait for the run to
+// end. Throws InputError naming the directory if another process holds it.
+class RunDirectoryClaim {
+ public:
+  explicit RunDirectoryClaim(const std::string& dir);
+  ~RunDirectoryClaim();
+  RunDirectoryClaim(const RunDirectoryClaim&) = delete;
+  RunDirectoryClaim& operator=(const RunDirectoryClaim&) = delete;
+  // The claim's file name, which a run directory may hold beside a run's outputs.
+  static constexpr const char* kFileName = ".vascsim-run.lock";
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+  std::unique_ptr<RemovedOnSignal> guard_;
+};
+
 // An exclusive lock on a directory (flock on the directory itself, so no lock file is left in
 // it), held for the object's life: processes that choose or update files there (two replay
 // servers numbering exports, adding bookmarks) take turns. Blocks until the lock is free.
