@@ -34,6 +34,8 @@ TEST(CliMaze, UsageErrorsExitTwo) {
       // An unset variable in a script: named, not ": cannot write".
       {"maze --out ''", "option '--out' needs a value FILE, got an empty one"},
       {"maze --out=", "option '--out' needs a value FILE, got an empty one"},
+      // A value left out: the next option is not taken for it (it said "--out FILE is required").
+      {"maze --out --rows 3", "option '--out' needs a value FILE, got the option '--rows'"},
       {"maze", "--out FILE is required"},
       {"maze --solver dfs --out " + dir + "/m.json", "--solver: expected wall_follower or bfs, got 'dfs'"},
       {"frobnicate", "unknown command 'frobnicate'"},

@@ -34,6 +34,11 @@ Args::Args(int argc, char** argv, int first, const std::vector<OptionSpec>& opti
       values_[name] = inline_value;
     } else {
       if (i + 1 >= argc) throw UsageError("option '--" + name + "' needs a value " + spec->value_name);
+      // `--out --duration 0.5` (a value left out): the next option is not taken as the value.
+      const std::string next = argv[i + 1];
+      for (const auto& o : options)
+        if (next == "--" + o.name || next.rfind("--" + o.name + "=", 0) == 0)
+          throw UsageError("option '--" + name + "' needs a value " + spec->value_name + ", got the option '" + next + "'");
       values_[name] = argv[++i];
     }
     // An empty list is a list (--layers '' draws no layer); an empty path or number is a
