@@ -214,7 +214,6 @@ int run_run_command(int argc, char** argv) {
     claim = std::make_unique<RunDirectoryClaim>(*out);
   }
 
-
   const std::string log_path = (fs::path(*out) / "frames.vlog").string();
   FrameLogWriter writer(log_path, log_header);
   FrameLogSink sink(writer);
