@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "sim/io/output_file.h"
 #include "tests/cli_test_support.h"
 #include "tests/sweep_test_support.h"
 
@@ -133,11 +134,12 @@ TEST(SweepCli, CtrlCStopsCleanlyAndAResumeGivesTheSameTable) {
   // running when it lands, however fast the machine.
   const std::string sweep = dir + "/durations.json";
   write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
-                        R"(", "axes": {"/run/duration": [0.2, 20, 20, 20], "/control/kp": [4]}})");
+                        R"(", "axes": {"/run/duration": [0.2, 20, 20.5, 21], "/control/kp": [4]}})");
   // kill signals the sweep alone (not its process group): the sweep must pass it on.
   const CommandResult r = run_shell("{ " + std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + dir +
                                     "/out --jobs 2 & pid=$!; "
-                                    "until [ -e " + dir + "/out/runs/0000/status.json ] && [ -e " + dir + "/out/runs/0001/frames.vlog ]; do sleep 0.01; done; "
+                                    "until [ -e " + dir + "/out/runs/0000/status.json ] && [ -e " + dir + "/out/runs/0001/frames.vlog ] || "
+                                    "! kill -0 $pid 2>/dev/null; do sleep 0.01; done; "
                                     "kill -INT $pid; wait $pid; echo \"exit code $?\"; }");
   ASSERT_TRUE(has(r.output, "exit code 130")) << r.output;
   EXPECT_TRUE(has(r.output, "interrupted")) << r.output;
@@ -171,11 +173,12 @@ TEST(SweepCli, ASweepKilledWithSigkillTakesItsRunsWithIt) {
   const std::string dir = fresh_temp_dir("sweep_sigkill");
   const std::string sweep = dir + "/long.json";
   write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
-                        R"(", "axes": {"/run/duration": [1000, 1000], "/control/kp": [4]}})");
+                        R"(", "axes": {"/run/duration": [1000, 1001], "/control/kp": [4]}})");
   const std::string out = dir + "/out";
   const CommandResult r = run_shell("{ " + std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + out +
                                     " --jobs 2 --no-merge & pid=$!; "
-                                    "until [ -s " + out + "/runs/0000/frames.vlog ] && [ -s " + out + "/runs/0001/frames.vlog ]; do sleep 0.01; done; "
+                                    "until [ -s " + out + "/runs/0000/frames.vlog ] && [ -s " + out + "/runs/0001/frames.vlog ] || "
+                                    "! kill -0 $pid 2>/dev/null; do sleep 0.01; done; "
                                     "kill -KILL $pid; wait $pid; echo \"exit code $?\"; "
                                     // Both locks free within 20 s: the runs have ended.
                                     "for i in $(seq 200); do flock -n " + out + "/runs/0000/.lock true && flock -n " + out +
@@ -354,6 +357,98 @@ TEST(SweepCli, BadInputIsRefusedBeforeAnythingIsWritten) {
   EXPECT_EQ(sweep_command(dir + "/s --shard 1").exit_code, 2);
   EXPECT_EQ(sweep_command(dir + "/s --emit condor").exit_code, 2);
   EXPECT_EQ(sweep_command("merge " + dir + "/mine").exit_code, 2);
+}
+
+// A run's scene edited by hand, then resumed through the directory: it ran the edited scene and
+// filed its results under the manifest's value (through the sweep file it was refused).
+TEST(SweepCli, AnEditedRunSceneIsRefusedOnResume) {
+  const std::string dir = fresh_temp_dir("sweep_edited");
+  const std::string sweep = write_maze_sweep(dir, "kp", R"({"/control/kp": [2, 4]})", 0.3);
+  const std::string out = dir + "/out";
+  ASSERT_EQ(sweep_command(sweep + " --out " + out + " --emit gnu-parallel").exit_code, 0);
+  const std::string scene = out + "/runs/0001/scene.json", original = read_text(scene);
+  const std::size_t kp = original.find("\"kp\": 4");
+  ASSERT_NE(kp, std::string::npos) << original;
+  write_text(scene, original.substr(0, kp) + "\"kp\": 3" + original.substr(kp + 7));
+  for (const std::string& command : {out, out + " --run-index 1"}) {
+    const CommandResult r = sweep_command(command);
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.output;
+    EXPECT_TRUE(has(r.output, scene + ": changed since the sweep wrote it")) << r.output;
+  }
+  EXPECT_FALSE(fs::exists(out + "/runs/0000/summary.json")) << "nothing runs before the check";
+  write_text(scene, original);
+  EXPECT_EQ(sweep_command(out + " --quiet").exit_code, 0);
+}
+
+// A sweep stopped while it wrote its run directories (the manifest comes last) left a directory
+// that it then refused as "somebody's folder", even with --force. The program's own leftovers
+// are taken up by the same sweep, by another one with --force; a user's file among them still
+// makes the directory somebody's.
+TEST(SweepCli, ASweepStoppedBeforeItsManifestIsTakenUpAgain) {
+  const std::string dir = fresh_temp_dir("sweep_unfinished");
+  const std::string sweep = write_maze_sweep(dir, "kp", R"({"/control/kp": [2, 4]})", 0.3);
+  const std::string out = dir + "/out";
+  // What the stopped sweep left: its copy of the sweep file, one run's scene (cut short), a
+  // temporary of a process that no longer runs.
+  fs::create_directories(out + "/runs/0000");
+  fs::copy_file(sweep, out + "/sweep.json");
+  write_text(out + "/runs/0000/scene.json", "{\"rod\": {");
+  const std::string temporary = temporary_sibling(out + "/runs/0000/scene.json");  // ...-HOST-PID
+  write_text(temporary.substr(0, temporary.rfind('-') + 1) + "999999999", "{");  // beyond any pid
+  const CommandResult r = sweep_command(sweep + " --out " + out + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out + "/manifest.json"));
+  EXPECT_TRUE(fs::exists(out + "/runs/0001/summary.json"));
+  EXPECT_NE(read_text(out + "/runs/0000/scene.json"), "{\"rod\": {");
+
+  const std::string other = write_maze_sweep(dir, "other", R"({"/control/kp": [3]})", 0.3);
+  fs::remove_all(out + "/runs/0001");
+  fs::remove(out + "/manifest.json");
+  for (const char* name : {"runs/0000/summary.json", "runs/0000/status.json", "runs/0000/frames.vlog", "runs/0000/run.log",
+                           "runs/0000/.lock", "results.csv", "results.json"})
+    fs::remove(out + "/" + name);
+  fs::remove_all(out + "/plots");
+  const CommandResult refused = sweep_command(other + " --out " + out);
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_TRUE(has(refused.output, out + ": holds the start of another sweep, stopped before its manifest.json was written"))
+      << refused.output;
+  ASSERT_EQ(sweep_command(other + " --out " + out + " --force --quiet").exit_code, 0);
+  EXPECT_TRUE(has(read_text(out + "/manifest.json"), "\"/control/kp\":3"));
+
+  fs::remove_all(out);
+  fs::create_directories(out + "/runs/0000");
+  fs::copy_file(sweep, out + "/sweep.json");
+  write_text(out + "/runs/0000/notes.txt", "mine");
+  const CommandResult mine = sweep_command(sweep + " --out " + out + " --force");
+  EXPECT_EQ(mine.exit_code, 2) << mine.output;
+  EXPECT_TRUE(has(mine.output, "is not empty and holds no sweep")) << mine.output;
+  EXPECT_EQ(read_text(out + "/runs/0000/notes.txt"), "mine");
+}
+
+// Two runners on one directory: the one that ends last sees the other's runs ended and exits 0
+// (it merged a complete table and exited 1, "being run by another process", before).
+TEST(SweepCli, ARunnerThatEndsAfterAnotherOnOneDirectoryExitsZero) {
+  const std::string dir = fresh_temp_dir("sweep_two_runners");
+  const std::string sweep = dir + "/two.json";
+  write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
+                        R"(", "axes": {"/run/duration": [0.3, 30]}})");
+  const std::string out = dir + "/out", exe = VASCSIM_EXE;
+  ASSERT_EQ(sweep_command(sweep + " --out " + out + " --emit gnu-parallel").exit_code, 0);
+  // The other runner holds entry 0's lock (flock(1), as a runner does) until the sweep has found
+  // it held, then runs entry 0 (0.3 s simulated) while the sweep runs entry 1 (30 s simulated).
+  // (Every wait also ends when the process it waits on has, so a failure fails, never hangs.)
+  const std::string other = "touch " + dir + "/locked; until grep -q 'being run by another process' " + dir +
+                            "/second.err 2>/dev/null || [ -e " + dir + "/second.done ]; do sleep 0.01; done; " + exe + " run " + out +
+                            "/runs/0000/scene.json --out " + out + "/runs/0000 --force --quiet";
+  const CommandResult r = run_shell("{ flock " + out + "/runs/0000/.lock sh -c \"" + other + "\" & holder=$!; until [ -e " + dir +
+                                    "/locked ] || ! kill -0 $holder 2>/dev/null; do sleep 0.005; done; " + exe + " sweep " + out + " --jobs 1 --no-merge 2>" +
+                                    dir + "/second.err; echo \"second exit code $?\"; touch " + dir + "/second.done; wait $holder; echo \"other exit code $?\"; "
+                                    "cat " + dir + "/second.err; }");
+  EXPECT_TRUE(has(r.output, "other exit code 0")) << r.output;
+  EXPECT_TRUE(has(r.output, "run 0000 is being run by another process; skipped")) << r.output;
+  EXPECT_TRUE(has(r.output, "ran 1 of 2 runs")) << r.output;
+  EXPECT_TRUE(fs::exists(out + "/runs/0000/summary.json"));
+  EXPECT_TRUE(has(r.output, "second exit code 0")) << r.output;
 }
 
 }  // namespace

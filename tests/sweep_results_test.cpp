@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <csignal>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "sim/io/sweep_manifest.h"
@@ -73,7 +74,7 @@ TEST(SweepResults, OneRowPerRunQuotedTimingLastAndSummariesOverTheOtherAxes) {
   m.name = "t";
   m.scene = "s.json";
   m.axes = {{"/control/kp", {"2", "4"}}, {"/solver/preset", {"\"fast\"", "\"a, b\""}}};
-  for (std::size_t i = 0; i < 4; ++i) m.runs.push_back({i, sweep_run_id(i, 4), 0, {m.axes[0].values[i / 2], m.axes[1].values[i % 2]}});
+  for (std::size_t i = 0; i < 4; ++i) m.runs.push_back({i, sweep_run_id(i, 4), 0, {m.axes[0].values[i / 2], m.axes[1].values[i % 2]}, ""});
   std::vector<RunOutcome> o(4);
   for (auto& x : o) x.metrics.assign(kMetricCount, NAN);
   o[0].status = "done", o[0].metrics[kTipErrorRms] = 0.001, o[0].metrics[kSteps] = 10, o[0].wall_time = 0.5;
@@ -109,6 +110,31 @@ TEST(SweepResults, OneRowPerRunQuotedTimingLastAndSummariesOverTheOtherAxes) {
   EXPECT_TRUE(std::isnan(kp4.mean[kTipErrorRms]));
   const std::string json = sweep_results_json(m, o);
   EXPECT_NE(json.find("\"counts\": {\n    \"runs\": 4,\n    \"done\": 2,\n    \"failed\": 1,\n    \"missing\": 1"), std::string::npos) << json;
+  // Counts are integers in results.json as in results.csv ("steps": 10.0 before).
+  const auto parsed = nlohmann::json::parse(json);
+  EXPECT_TRUE(parsed["runs"][0]["steps"].is_number_integer()) << parsed["runs"][0].dump();
+  EXPECT_TRUE(parsed["runs"][0]["tip_error_rms_m"].is_number_float());
+  EXPECT_TRUE(parsed["per_axis"][0]["values"][0]["steps"]["max"].is_number_integer());
+}
+
+// A zipped axis that repeats a value (and 2 beside 2.0): one summary row per distinct value,
+// holding all its runs (each row claimed the runs of both before).
+TEST(SweepResults, AValueRepeatedOnAZippedAxisIsOneSummaryRow) {
+  SweepManifest m;
+  m.name = "t";
+  m.scene = "s.json";
+  m.axes = {{"/control/kp", {"2", "4", "2.0"}}, {"/maze/seed", {"1", "2", "3"}}};
+  for (std::size_t i = 0; i < 3; ++i) m.runs.push_back({i, sweep_run_id(i, 3), 0, {m.axes[0].values[i], m.axes[1].values[i]}, ""});
+  std::vector<RunOutcome> o(3);
+  for (auto& x : o) x.metrics.assign(kMetricCount, NAN), x.status = "done";
+  o[0].metrics[kTipErrorRms] = 0.001, o[1].metrics[kTipErrorRms] = 0.005, o[2].metrics[kTipErrorRms] = 0.003;
+  const auto axes = summarise_sweep(m, o);
+  ASSERT_EQ(axes[0].values.size(), 2u);
+  EXPECT_EQ(axes[0].values[0].value, "2");
+  EXPECT_EQ(axes[0].values[0].runs, 2u);
+  EXPECT_DOUBLE_EQ(axes[0].values[0].mean[kTipErrorRms], 0.002);
+  EXPECT_EQ(axes[0].values[1].runs, 1u);
+  EXPECT_EQ(axes[1].values.size(), 3u);
 }
 
 }  // namespace

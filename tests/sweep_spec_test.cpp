@@ -187,6 +187,23 @@ TEST(SweepSpec, MistakesInTheFileItselfNameThePointer) {
   expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [1], "/loads/damping/coefficient": [2]})"), "/axes/~1loads~1damping~1coefficient: the key appears twice");
   expect_error(sweep_with_axes(R"({"/maze/seed": {"from": 1, "to": 1000}, "/loads/damping/coefficient": {"from": 1, "to": 1000}})"),
                "/axes: the sweep has 1000000 runs, more than the limit");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": {"from": 1, "to": 11}})", R"(, "repeats": 10000)"),
+               "/axes and /repeats: the sweep has 110000 runs (11 settings, each 10000 times), more than the limit");
+}
+
+// A value twice on one axis of a product (2 and 2.0 set the same number) would make its runs
+// twice and count them under two rows of the per-value summary: refused, naming both places.
+// A zipped axis may repeat a value beside different values of the others.
+TEST(SweepSpec, AValueGivenTwiceOnAProductAxisIsRefused) {
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [2, 4, 2.0]})"),
+               "/axes/~1loads~1damping~1coefficient/2: the value 2.0 is given twice (also at "
+               "/axes/~1loads~1damping~1coefficient/0): each run would be made twice; use \"repeats\"");
+  expect_error(sweep_with_axes(R"({"/loads/damping/coefficient": [1, 2], "/rod/density": [0.1, 0.3, 0.1]})"),
+               "/axes/~1rod~1density/2: the value 0.1 is given twice (also at /axes/~1rod~1density/0)");
+  EXPECT_EQ(plan_of(sweep_with_axes(R"({"/loads/damping/coefficient": [2, 2, 4], "/rod/density": [0.1, 0.2, 0.3]})",
+                                    R"(, "combine": "zip")"))
+                .runs.size(),
+            3u);
 }
 
 TEST(SweepSpec, TheBaseSceneIsCheckedAndNamed) {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sim/io/output_file.h"
+#include "sim/io/provenance.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::sweep {
@@ -36,6 +37,31 @@ void remove_sweep_outputs(const fs::path& dir) {
   for (const char* name : {"runs", "plots", "parallel", "slurm"}) fs::remove_all(dir / name, ec);
 }
 
+// What a sweep stopped while it wrote its directory leaves (the manifest is written last): the
+// copy of its sweep file and run directories holding nothing but their scene, all of them the
+// program's. Stale temporaries of the stopped writer are removed on the way.
+bool is_unfinished_sweep_directory(const fs::path& root) {
+  std::error_code ec;
+  remove_stale_temporaries(root.string());
+  bool has_copy = false;
+  for (const auto& entry : fs::directory_iterator(root, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "sweep.json" && entry.is_regular_file(ec)) {
+      has_copy = true;
+    } else if (name == "runs" && entry.is_directory(ec)) {
+      for (const auto& run : fs::directory_iterator(entry.path(), ec)) {
+        if (!run.is_directory(ec)) return false;
+        remove_stale_temporaries(run.path().string());
+        for (const auto& file : fs::directory_iterator(run.path(), ec))
+          if (file.path().filename() != "scene.json") return false;
+      }
+    } else {
+      return false;
+    }
+  }
+  return has_copy && !ec;
+}
+
 }  // namespace
 
 bool is_sweep_directory(const std::string& path) {
@@ -45,6 +71,19 @@ bool is_sweep_directory(const std::string& path) {
 
 std::string run_directory(const SweepDirectory& sweep, std::size_t index) {
   return (fs::path(sweep.dir) / "runs" / sweep.manifest.runs.at(index).id).string();
+}
+
+void check_run_scene(const SweepDirectory& sweep, std::size_t index) {
+  const SweepManifestRun& run = sweep.manifest.runs.at(index);
+  if (run.scene_hash.empty()) return;
+  const fs::path path = fs::path(sweep.dir) / run_scene_path(run.id);
+  std::string scene;
+  if (!read_file(path, scene))
+    throw InputError(path.string() + ": cannot read the run's scene (the sweep wrote it; run the sweep file again)");
+  if (scene_hash(scene) != run.scene_hash)
+    throw InputError(path.string() + ": changed since the sweep wrote it (manifest.json holds another scene_hash): its "
+                     "results would be filed under the manifest's values; restore it, or run the sweep file again "
+                     "with --force");
 }
 
 SweepDirectory open_sweep_directory(const std::string& dir) {
@@ -84,6 +123,14 @@ SweepDirectory prepare_sweep_directory(const SweepPlan& plan, const std::string&
                          "): choose another --out, or pass --force to delete its runs and start again");
       if (same) resumed = true;
       else remove_sweep_outputs(root);
+    } else if (is_unfinished_sweep_directory(root)) {
+      // Made again from the start: the same sweep takes it up, another one only with --force.
+      std::string copy;
+      const bool same = read_file(root / "sweep.json", copy) && copy == sweep_text;
+      if (!same && !force)
+        throw InputError(dir + ": holds the start of another sweep, stopped before its manifest.json was written: "
+                               "choose another --out, or pass --force to start again");
+      if (!same) remove_sweep_outputs(root);
     } else if (!fs::is_empty(root, ec)) {
       throw InputError(dir + ": is not empty and holds no sweep (no manifest.json); choose a new or empty directory");
     }

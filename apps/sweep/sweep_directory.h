@@ -32,5 +32,9 @@ SweepDirectory open_sweep_directory(const std::string& dir);
 bool is_sweep_directory(const std::string& path);
 // DIR/runs/<id>.
 std::string run_directory(const SweepDirectory& sweep, std::size_t index);
+// Throws InputError if entry `index`'s scene file is not the one the sweep wrote (the manifest's
+// scene_hash): its results would be filed under the manifest's values. Manifests without hashes
+// are not checked.
+void check_run_scene(const SweepDirectory& sweep, std::size_t index);
 
 }  // namespace vascsim::sweep

@@ -102,6 +102,9 @@ RunnerReport run_sweep_entries(const SweepDirectory& sweep, const RunnerOptions&
     else if (o.status == "failed" && !options.retry_failed) ++report.already_failed;
     else pending.push_back(index);
   }
+  // Before anything starts: an edited scene's results would be tabulated under the manifest's
+  // values (resuming through the sweep file compares every scene; through DIR it did not).
+  for (const std::size_t index : pending) check_run_scene(sweep, index);
   const bool show_progress = options.progress && ::isatty(STDERR_FILENO);
   const std::string exe = vascsim_executable();
   const std::size_t to_run = pending.size();
@@ -129,6 +132,7 @@ RunnerReport run_sweep_entries(const SweepDirectory& sweep, const RunnerOptions&
       RunProcess p;
       if (!p.lock(sweep, index)) {
         ++report.busy;
+        report.busy_entries.push_back(index);
         if (!options.quiet)
           std::fprintf(stderr, "%srun %s is being run by another process; skipped\n", progress_shown ? "\n" : "",
                        sweep.manifest.runs[index].id.c_str());

@@ -35,6 +35,7 @@ struct RunnerReport {
   std::size_t already_done = 0;    // skipped: completed before
   std::size_t already_failed = 0;  // skipped: failed before (no retry_failed)
   std::size_t busy = 0;            // skipped: another process holds the run's lock
+  std::vector<std::size_t> busy_entries;  // their indices, to look at again when this runner ends
   std::size_t ran = 0, done = 0, failed = 0;  // started by this invocation, and how they ended
   std::size_t not_started = 0;     // left when interrupted
   bool interrupted = false;

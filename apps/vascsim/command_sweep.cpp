@@ -63,7 +63,8 @@ void print_usage() {
       "Invoking it again resumes: completed runs are skipped, missing ones run (--retry-failed: failed\n"
       "ones too). Ctrl-C stops cleanly; completed runs stay. When every run has ended it merges:\n"
       "DIR/results.csv, DIR/results.json, DIR/plots/ and a summary table (see vascsim sweep merge).\n"
-      "Exit code 0 when every run completed, 1 if any failed, 2 for bad input, 130 when interrupted.\n\n"
+      "Exit code 0 when every run completed, 1 if any failed or another runner still runs one, 2 for bad\n"
+      "input, 130 (143 for SIGTERM) when interrupted.\n\n"
       "options:\n%s",
       format_options(kOptions).c_str());
 }
@@ -280,7 +281,15 @@ int run_sweep_command(int argc, char** argv) {
     return 128 + r.signal;
   }
   if (!args.flag("no-merge")) merge_after_run(dir, quiet);
-  return r.failed + r.already_failed > 0 || r.busy > 0 ? 1 : 0;
+  // Runs another runner held: how they have ended by now (a second runner on one directory that
+  // finishes last merged a complete table and exited 1, as if some were still running).
+  std::size_t others_failed = 0, others_running = 0;
+  for (const std::size_t index : r.busy_entries) {
+    const std::string status = read_run_outcome(sweep::run_directory(dir, index)).status;
+    others_failed += status == "failed";
+    others_running += status == "missing";
+  }
+  return r.failed + r.already_failed + others_failed + others_running > 0 ? 1 : 0;
 }
 
 }  // namespace vascsim::cli

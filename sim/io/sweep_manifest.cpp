@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sim/io/json_fields.h"
+#include "sim/io/provenance.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim {
@@ -26,7 +27,7 @@ SweepManifest manifest_of(const SweepPlan& plan) {
   m.repeats = plan.spec.repeats;
   m.axes = plan.spec.axes;
   m.overrides = plan.spec.overrides;
-  for (const auto& r : plan.runs) m.runs.push_back({r.index, r.id, r.repeat, r.values});
+  for (const auto& r : plan.runs) m.runs.push_back({r.index, r.id, r.repeat, r.values, scene_hash(r.scene_json)});
   return m;
 }
 
@@ -49,8 +50,10 @@ std::string sweep_manifest_json(const SweepManifest& m) {
   for (const auto& r : m.runs) {
     ordered_json overrides = ordered_json::object();
     for (std::size_t k = 0; k < m.axes.size(); ++k) overrides[m.axes[k].pointer] = ordered_json::parse(r.values[k]);
-    j["runs"].push_back({{"index", r.index}, {"id", r.id}, {"repeat", r.repeat}, {"overrides", overrides},
-                         {"scene", run_scene_path(r.id)}});
+    ordered_json run = {{"index", r.index}, {"id", r.id}, {"repeat", r.repeat}, {"overrides", overrides},
+                        {"scene", run_scene_path(r.id)}};
+    if (!r.scene_hash.empty()) run["scene_hash"] = r.scene_hash;
+    j["runs"].push_back(run);
   }
   // One run per line keeps a large manifest readable and diffable.
   std::string out = "{\n";
@@ -128,6 +131,7 @@ SweepManifest read_sweep_manifest(const std::string& path) {
     o.finish();
     if (r.text("scene", "") != run_scene_path(run.id))
       r.fail("scene", json(run_scene_path(run.id)).dump(), (*runs)[i].value("scene", json()));
+    run.scene_hash = r.text("scene_hash", "");
     r.finish();
     m.runs.push_back(run);
   }

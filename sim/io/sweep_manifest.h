@@ -21,6 +21,9 @@ struct SweepManifestRun {
   std::string id;                   // the directory DIR/runs/<id>/
   int repeat = 0;
   std::vector<std::string> values;  // one per axis, compact JSON text
+  // scene_hash() of its scene file as the sweep wrote it, so a runner can tell an edited scene
+  // (whose results would be filed under these values); empty in manifests written before.
+  std::string scene_hash;
 };
 
 struct SweepManifest {

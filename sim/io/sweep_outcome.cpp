@@ -94,16 +94,16 @@ void read_status(const std::string& text, const std::string& label, RunStatusRec
 
 const std::vector<SweepMetric>& sweep_metrics() {
   static const std::vector<SweepMetric> metrics = {
-      {"goal_reached", "goal reached", "", 1.0},
+      {"goal_reached", "goal reached", "", 1.0, true},
       {"goal_time_s", "goal time", "s", 1.0},
       {"tip_error_rms_m", "tip error RMS", "mm", 1e3},
       {"tip_error_max_m", "tip error max", "mm", 1e3},
       {"actuation_force_max_N", "actuation force max", "mN", 1e3},
       {"contact_force_max_N", "contact force max", "mN", 1e3},
       {"max_penetration_m", "max penetration", "mm", 1e3},
-      {"steps", "steps", "", 1.0},
-      {"newton_iterations", "Newton iterations", "", 1.0},
-      {"rejected_steps", "rejected steps", "", 1.0},
+      {"steps", "steps", "", 1.0, true},
+      {"newton_iterations", "Newton iterations", "", 1.0, true},
+      {"rejected_steps", "rejected steps", "", 1.0, true},
   };
   return metrics;
 }

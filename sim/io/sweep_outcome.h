@@ -23,6 +23,7 @@ struct SweepMetric {
   const char* label;   // for tables and plots: "tip error RMS"
   const char* unit;    // display unit in tables and plots: "mm"
   double scale;        // display value = SI value * scale
+  bool whole = false;  // a count (or 0/1): an integer in results.json
 };
 const std::vector<SweepMetric>& sweep_metrics();
 // Indices into sweep_metrics(), for the code that picks figures by meaning.

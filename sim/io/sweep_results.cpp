@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "sim/io/json_fields.h"
 
@@ -30,6 +31,12 @@ std::string csv_cell(const std::string& text) {
 }
 
 ordered_json number_json(double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(nullptr); }
+// A count as an integer ("steps": 19, not 19.0), as results.csv writes it.
+ordered_json metric_json(double v, const SweepMetric& metric) {
+  if (metric.whole && std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 9007199254740992.0)
+    return ordered_json(static_cast<long long>(v));
+  return number_json(v);
+}
 
 }  // namespace
 
@@ -90,31 +97,38 @@ std::vector<SweepAxisSummary> summarise_sweep(const SweepManifest& m, const std:
   for (std::size_t k = 0; k < m.axes.size(); ++k) {
     SweepAxisSummary axis;
     axis.pointer = m.axes[k].pointer;
+    // One row per distinct value, as JSON compares them (2 and 2.0 are one), in the axis's order:
+    // a zipped axis may repeat a value, each time beside another value of the other axes.
+    std::map<json, std::size_t> row_of;
     for (const auto& value : m.axes[k].values) {
+      if (!row_of.emplace(json::parse(value), axis.values.size()).second) continue;
       SweepValueSummary s;
       s.value = value;
       s.mean.assign(nm, 0.0), s.min.assign(nm, nan), s.max.assign(nm, nan), s.count.assign(nm, 0);
-      for (std::size_t r = 0; r < m.runs.size(); ++r) {
-        if (m.runs[r].values[k] != value) continue;
-        const RunOutcome& o = outcomes[r];
-        ++s.runs;
-        if (o.status == "failed") ++s.failed;
-        if (o.status == "missing") ++s.missing;
-        if (o.status != "done") continue;
-        ++s.done;
-        if (o.metrics[kGoalReached] == 1.0) ++s.goal_reached;
-        for (std::size_t i = 0; i < nm; ++i) {
-          const double v = o.metrics[i];
-          if (!std::isfinite(v)) continue;
-          s.mean[i] += v;
-          s.min[i] = s.count[i] ? std::min(s.min[i], v) : v;
-          s.max[i] = s.count[i] ? std::max(s.max[i], v) : v;
-          ++s.count[i];
-        }
-      }
-      for (std::size_t i = 0; i < nm; ++i) s.mean[i] = s.count[i] ? s.mean[i] / static_cast<double>(s.count[i]) : nan;
       axis.values.push_back(std::move(s));
     }
+    for (std::size_t r = 0; r < m.runs.size(); ++r) {
+      const auto row = row_of.find(json::parse(m.runs[r].values[k]));
+      if (row == row_of.end()) continue;  // a hand-edited manifest: a value its axis does not list
+      SweepValueSummary& s = axis.values[row->second];
+      const RunOutcome& o = outcomes[r];
+      ++s.runs;
+      if (o.status == "failed") ++s.failed;
+      if (o.status == "missing") ++s.missing;
+      if (o.status != "done") continue;
+      ++s.done;
+      if (o.metrics[kGoalReached] == 1.0) ++s.goal_reached;
+      for (std::size_t i = 0; i < nm; ++i) {
+        const double v = o.metrics[i];
+        if (!std::isfinite(v)) continue;
+        s.mean[i] += v;
+        s.min[i] = s.count[i] ? std::min(s.min[i], v) : v;
+        s.max[i] = s.count[i] ? std::max(s.max[i], v) : v;
+        ++s.count[i];
+      }
+    }
+    for (SweepValueSummary& s : axis.values)
+      for (std::size_t i = 0; i < nm; ++i) s.mean[i] = s.count[i] ? s.mean[i] / static_cast<double>(s.count[i]) : nan;
     axes.push_back(std::move(axis));
   }
   return axes;
@@ -141,7 +155,7 @@ std::string sweep_results_json(const SweepManifest& m, const std::vector<RunOutc
     for (std::size_t k = 0; k < m.axes.size(); ++k) row["overrides"][m.axes[k].pointer] = ordered_json::parse(m.runs[r].values[k]);
     row["status"] = o.status;
     row["failure"] = o.failure.empty() ? ordered_json(nullptr) : ordered_json(o.failure);
-    for (std::size_t i = 0; i < metrics.size(); ++i) row[metrics[i].column] = number_json(o.metrics[i]);
+    for (std::size_t i = 0; i < metrics.size(); ++i) row[metrics[i].column] = metric_json(o.metrics[i], metrics[i]);
     row["timing"] = {{"wall_time_s", o.wall_time >= 0 ? ordered_json(o.wall_time) : ordered_json(nullptr)},
                      {"real_time_factor", o.real_time_factor >= 0 ? ordered_json(o.real_time_factor) : ordered_json(nullptr)},
                      {"process_time_s", o.has_status ? ordered_json(o.process.wall_time) : ordered_json(nullptr)},
@@ -161,8 +175,8 @@ std::string sweep_results_json(const SweepManifest& m, const std::vector<RunOutc
       s["runs"] = v.runs, s["done"] = v.done, s["failed"] = v.failed, s["missing"] = v.missing;
       s["goal_reached"] = v.goal_reached;
       for (std::size_t i = 0; i < metrics.size(); ++i)
-        s[metrics[i].column] = {{"mean", number_json(v.mean[i])}, {"min", number_json(v.min[i])},
-                                {"max", number_json(v.max[i])}, {"count", v.count[i]}};
+        s[metrics[i].column] = {{"mean", number_json(v.mean[i])}, {"min", metric_json(v.min[i], metrics[i])},
+                                {"max", metric_json(v.max[i], metrics[i])}, {"count", v.count[i]}};
       a["values"].push_back(s);
     }
     summary.push_back(a);

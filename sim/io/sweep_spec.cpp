@@ -1,5 +1,6 @@
 #include "sim/io/sweep_spec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -113,6 +114,29 @@ std::vector<std::string> read_values(const json& v, const std::string& label, co
   return values;
 }
 
+// A value given twice on one axis of a product sweep (2 and 2.0 are one value): each of its runs
+// would be made twice, and the per-value summary would count them under two rows. Refused,
+// naming both places; "repeats" runs a setting more than once. Sorted, not compared pairwise: an
+// axis may hold 100000 values.
+void check_distinct_values(const SweepAxis& axis, const json& given, const std::string& label) {
+  std::vector<json> values;
+  values.reserve(axis.values.size());
+  for (const auto& v : axis.values) values.push_back(json::parse(v));
+  std::vector<std::size_t> order(values.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const std::size_t first = order[k - 1], again = order[k];
+    if (!(values[first] == values[again])) continue;
+    const std::string where = "/axes/" + io::escape_pointer_token(axis.pointer);
+    const bool listed = given.is_array();
+    throw InputError(label + ": " + where + (listed ? "/" + std::to_string(again) : "") + ": the value " +
+                     values[again].dump() + " is given twice" +
+                     (listed ? " (also at " + where + "/" + std::to_string(first) + ")" : " (the range rounds two steps to it)") +
+                     ": each run would be made twice; use \"repeats\" to run a setting more than once");
+  }
+}
+
 // The keys of a JSON object in the order the file writes them (nlohmann::json sorts them; the
 // order of the axes is the user's: the first varies slowest, columns appear in that order).
 std::vector<std::string> keys_in_file_order(const std::string& text, const std::string& key) {
@@ -159,6 +183,7 @@ SweepSpec read_sweep_text(const std::string& text, const std::string& label) {
         throw InputError(label + ": " + where + ": " + key + " overlaps the axis " + axis.pointer +
                          "; a run's value would depend on which is applied last (name each field once)");
     spec.axes.push_back({key, read_values((*axes)[key], label, where)});
+    if (spec.combine == SweepCombine::kProduct) check_distinct_values(spec.axes.back(), (*axes)[key], label);
   }
   if (const json* fixed = in.raw("overrides")) {
     if (!fixed->is_object()) in.fail("overrides", "an object of JSON pointers into the scene and their values", *fixed);
@@ -194,8 +219,12 @@ SweepSpec read_sweep_text(const std::string& text, const std::string& label) {
   else
     for (const auto& axis : spec.axes) runs *= static_cast<double>(axis.values.size());
   if (runs > static_cast<double>(kMaxSweepRuns))
-    throw InputError(label + ": /axes: the sweep has " + io::format_number(runs) + " runs, more than the limit of " +
-                     std::to_string(kMaxSweepRuns));
+    throw InputError(label + (spec.repeats > 1 ? ": /axes and /repeats: " : ": /axes: ") + "the sweep has " +
+                     io::format_number(runs) + " runs" +
+                     (spec.repeats > 1 ? " (" + io::format_number(runs / spec.repeats) + " settings, each " +
+                                             std::to_string(spec.repeats) + " times)"
+                                       : "") +
+                     ", more than the limit of " + std::to_string(kMaxSweepRuns));
   return spec;
 }
 
