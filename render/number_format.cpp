@@ -32,8 +32,16 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
 }
 
 std::string format_tick(double value, double step) {
+  char buf[400];
+  if (std::abs(value) >= 1e7 || step < 1e-6) {
+    // Far from 1 (a plot of a diverging run's forces at 1e300 N): a mantissa with the digits the
+    // step leaves distinct, not 301 digits or a dozen leading zeros.
+    const double magnitude = std::max(std::abs(value), step);
+    const int digits = static_cast<int>(std::ceil(std::log10(magnitude) + 1e-9) - std::floor(std::log10(step) + 1e-9));
+    std::snprintf(buf, sizeof buf, "%.*g", std::clamp(digits, 1, 17), value);
+    return buf;
+  }
   const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
-  char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
   return buf;
 }
@@ -57,8 +65,13 @@ std::string format_value(double value_si, DisplayUnit unit, int digits) {
 
 std::string format_round_value(double value_si, DisplayUnit unit) {
   const double shown = std::abs(value_si * unit.factor);
-  const int decimals = shown >= 1 || !(shown > 0) ? 0 : std::min(12, static_cast<int>(std::ceil(-std::log10(shown) - 1e-9)));
-  return format_value(value_si, unit, decimals);
+  const int decimals = shown >= 1 || !(shown > 0) ? 0 : static_cast<int>(std::ceil(-std::log10(shown) - 1e-9));
+  if (decimals <= 4) return format_value(value_si, unit, decimals);
+  // Far below the unit (a user's arrow scale of 1e15 px/N gives a 5e-14 N reference): a
+  // mantissa and exponent, not a dozen zeros to count ("0.00000000005 mN").
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.0e %s", value_si * unit.factor, unit.name);
+  return buf;
 }
 
 }  // namespace vascsim::render

@@ -28,7 +28,8 @@ DisplayUnit length_unit(double typical_metres);
 // "1.23 mN": `digits` decimals in the unit.
 std::string format_value(double value_si, DisplayUnit unit, int digits);
 // A round value (nice_floor's) with the decimals its one significant digit needs in the unit:
-// "20 mm", "0.5 mN", "0.02 mN" (a legend's reference force far below the unit chose "0.0 mN").
+// "20 mm", "0.5 mN", "0.02 mN" (a legend's reference force far below the unit chose "0.0 mN");
+// below 1e-4 of the unit an exponent, "5e-11 mN".
 std::string format_round_value(double value_si, DisplayUnit unit);
 
 }  // namespace vascsim::render

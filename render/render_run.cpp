@@ -57,13 +57,7 @@ std::string dropped_note(const Canvas& canvas) {
 // Run B from another environment is drawn over this run's map, where its rod means nothing:
 // most likely the wrong run was named. Said, not refused: two variants of one vessel compare.
 std::string overlay_environment_note(const FrameSource& source, const FrameSource& overlay, const std::string& overlay_run) {
-  const LogMetadata &a = source.metadata(), &b = overlay.metadata();
-  const auto same_wall = [](const WallSegment& p, const WallSegment& q) {
-    return p.a == q.a && p.b == q.b && p.thickness == q.thickness;
-  };
-  if (a.bounds.min == b.bounds.min && a.bounds.max == b.bounds.max && a.lumen == b.lumen &&
-      std::equal(a.walls.begin(), a.walls.end(), b.walls.begin(), b.walls.end(), same_wall))
-    return "";
+  if (same_environment(source.metadata(), overlay.metadata())) return "";
   return "warning: " + overlay_run + " ran in another environment (its walls or lumen differ from this run's): its rod is drawn over this run's map";
 }
 

@@ -1,7 +1,5 @@
 #include "render/view.h"
 
-#include <sstream>
-
 #include "sim/io/decimal_text.h"
 #include "sim/scene/input_error.h"
 
@@ -20,12 +18,15 @@ std::string known_layers() {
   return s;
 }
 
+// Every item, empty ones too: "1,2," is three items (getline would drop the last).
 std::vector<std::string> split_commas(const std::string& list) {
   std::vector<std::string> items;
-  std::string item;
-  std::istringstream in(list);
-  while (std::getline(in, item, ',')) items.push_back(item);
-  return items;
+  for (std::size_t begin = 0;;) {
+    const std::size_t comma = list.find(',', begin);
+    items.push_back(list.substr(begin, comma - begin));
+    if (comma == std::string::npos) return items;
+    begin = comma + 1;
+  }
 }
 
 }  // namespace
@@ -53,11 +54,18 @@ std::vector<std::string> all_layer_names() { return {std::begin(kLayerNames), st
 
 LayerSet parse_layer_list(const std::string& list) {
   LayerSet s = LayerSet::none();
+  if (list.empty()) return s;
   for (const std::string& name : split_commas(list)) {
+    // A layer twice or an empty name ("rod,,walls", "rod,") is a list edited by hand or built by
+    // a script gone wrong: said, like an unknown name, rather than guessed at.
+    if (name.empty())
+      throw InputError("an empty layer name in '" + list.substr(0, 64) + "' (expected a comma-separated list of " +
+                       known_layers() + ")");
     const auto layer = layer_from_name(name);
     if (!layer)
       throw InputError("unknown layer '" + name.substr(0, 64) + "' (expected a comma-separated list of " +
                        known_layers() + ")");
+    if (s.has(*layer)) throw InputError("layer '" + name + "' is listed twice in '" + list.substr(0, 64) + "'");
     s.set(*layer, true);
   }
   return s;
@@ -81,7 +89,7 @@ CameraMode parse_camera(const std::string& name) {
   if (name == "fit") return CameraMode::kFit;
   if (name == "follow") return CameraMode::kFollow;
   if (name == "center" || name == "centre") return CameraMode::kCentre;
-  throw InputError("camera: expected fit, follow or center, got '" + name.substr(0, 64) + "'");
+  throw InputError("expected fit, follow or center, got '" + name.substr(0, 64) + "'");
 }
 
 const char* camera_name(CameraMode mode) {
@@ -102,7 +110,7 @@ Vec2 parse_centre(const std::string& text) {
   };
   Vec2 c;
   if (parts.size() != 2 || !number(parts[0], c.x()) || !number(parts[1], c.y()))
-    throw InputError("center: expected X,Y in metres (two finite numbers), got '" + text.substr(0, 64) + "'");
+    throw InputError("expected X,Y in metres (two finite numbers), got '" + text.substr(0, 64) + "'");
   return c;
 }
 

@@ -50,7 +50,9 @@ class LayerSet {
 const char* layer_name(Layer layer);
 std::optional<Layer> layer_from_name(const std::string& name);
 std::vector<std::string> all_layer_names();
-// "a,b,c" to a set; "" is no layer. Throws InputError naming the unknown layer and the known ones.
+// "a,b,c" to a set; "" is no layer. Throws InputError naming the unknown layer and the known ones
+// (an empty name or one given twice, too). The parsers' messages do not name the option or URL
+// parameter the text came from: the caller does.
 LayerSet parse_layer_list(const std::string& list);
 // The set as "a,b,c", in drawing order.
 std::string format_layer_list(LayerSet layers);

@@ -76,5 +76,23 @@ TEST(DiskFull, AnExportLeavesAllItsFilesOrNone) {
   fs::remove_all(dir);
 }
 
+// Standard output on a full disk: a maze's JSON or a run's result line lost is an error, not
+// exit 0 with nothing written (stdout to a file is buffered until exit).
+TEST(DiskFull, AFullStandardOutputIsAnError) {
+  const std::string dir = fresh_temp_dir("disk_full_stdout");
+  // The braces keep run_shell's own 2>&1 from sending the error message to /dev/full as well.
+  CommandResult r = run_shell("{ " + std::string(VASCSIM_EXE) + " maze --seed 3 --out - 2>&1 >/dev/full; }");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("vascsim maze: cannot write to standard output (No space left on device)"), std::string::npos)
+      << r.output;
+  write_text(dir + "/scene.json", R"({"maze": null, "rod": {"nodes": 8}, "run": {"duration": 0.01}})");
+  r = run_shell("{ " + std::string(VASCSIM_EXE) + " run " + dir + "/scene.json --out " + dir + "/run 2>&1 >/dev/full; }");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("vascsim run: cannot write to standard output"), std::string::npos) << r.output;
+  // The same commands to a working standard output succeed.
+  EXPECT_EQ(run_shell(std::string(VASCSIM_EXE) + " maze --seed 3 --out - >/dev/null").exit_code, 0);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace vascsim::test

@@ -63,6 +63,21 @@ TEST(CliMaze, DoesNotOverwriteWithoutForce) {
   std::filesystem::remove_all(dir);
 }
 
+// `--out -` is standard output, as for Unix tools (it wrote a file named "-"): the same bytes as
+// the file, and nothing else on standard output; a file named "-" is still reachable as ./-.
+TEST(CliMaze, OutDashWritesTheDocumentToStandardOutput) {
+  const std::string dir = fresh_temp_dir("stdout");
+  ASSERT_EQ(run_vascsim("maze --seed 7 --rows 4 --cols 5 --out " + dir + "/a.json").exit_code, 0);
+  const CommandResult r = run_shell("cd " + dir + " && " + std::string(VASCSIM_EXE) +
+                                    " maze --seed 7 --rows 4 --cols 5 --out - 2>/dev/null");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.output, read_text(dir + "/a.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/-"));
+  ASSERT_EQ(run_shell("cd " + dir + " && " + std::string(VASCSIM_EXE) + " maze --seed 7 --rows 4 --cols 5 --out ./-").exit_code, 0);
+  EXPECT_EQ(read_text(dir + "/-"), read_text(dir + "/a.json"));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CliMaze, SameSeedSameBytesDifferentSeedDifferentMaze) {
   const std::string dir = fresh_temp_dir("determinism");
   ASSERT_EQ(run_vascsim("maze --seed 7 --rows 9 --cols 11 --out " + dir + "/a.json").exit_code, 0);

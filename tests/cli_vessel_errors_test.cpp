@@ -320,6 +320,10 @@ TEST(VesselsCommand, WritesTheNetworkAndRefusesAMaze) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   r = run_vascsim("vessels --scene " + source_path("scenes/bifurcation.json") + " --out " + dir + "/n2.json");
   EXPECT_EQ(read_text(dir + "/n2.json"), doc);
+  // `--out -`: the same document on standard output, and nothing else there.
+  r = run_shell(std::string(VASCSIM_EXE) + " vessels --scene " + source_path("scenes/bifurcation.json") + " --out - 2>/dev/null");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.output, doc);
   r = run_vascsim("vessels --scene " + source_path("scenes/maze_default.json") + " --out " + dir + "/m.json");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("has no \"vessels\" section"), std::string::npos) << r.output;

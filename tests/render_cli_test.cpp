@@ -111,6 +111,38 @@ TEST(RenderCli, ALogWithOtherFramesThanItsSummaryIsRefused) {
   EXPECT_EQ(run_vascsim("render '" + run + "'" + still + " --force", dir).exit_code, 0);
 }
 
+// A summary names the scene its run ran (provenance.scene_hash), as the log does: another run's
+// summary beside a log with as many frames is refused, not shown as this run's numbers.
+TEST(RenderCli, ASummaryOfAnotherSceneIsRefused) {
+  ScratchDir dir("cli_summary_scene");
+  SyntheticLogSpec spec;
+  spec.frames = 10;
+  LogMetadata metadata = synthetic_metadata(spec);
+  metadata.scene_hash = "1111111111111111";
+  const std::string run = dir / "run";
+  fs::create_directories(run);
+  write_synthetic_log(run + "/frames.vlog", spec, metadata);
+  const std::string summary = R"({"format": "vascsim-summary/1", "ok": true, "frames": 10, "provenance": {"scene_hash": ")";
+  const std::string still = " --still 0.5 --width 64 --height 64 --png '" + (dir / "still.png") + "' --force";
+  testing::write_bytes(run + "/summary.json", summary + "2222222222222222\"}}");
+  testing::CommandResult r = run_vascsim("render '" + run + "'" + still, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(run + "/summary.json: /provenance/scene_hash is 2222222222222222, but " + run +
+                       "/frames.vlog was written by a run of the scene with hash 1111111111111111"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "still.png"));
+  r = run_vascsim("export '" + run + "' --csv '" + (dir / "csv") + "'", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("the summary is another run's"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "csv"));
+  // The run's own summary, and one written before hashes were recorded, are accepted.
+  for (const std::string& hash : {std::string("1111111111111111"), std::string()}) {
+    testing::write_bytes(run + "/summary.json", summary + hash + "\"}}");
+    EXPECT_EQ(run_vascsim("render '" + run + "'" + still, dir).exit_code, 0) << hash;
+  }
+}
+
 TEST(RenderCli, UnwritableDestinationExits2WithoutPartialFiles) {
   ScratchDir dir("cli_unwritable");
   const std::string run = testing::make_run(dir, SyntheticLogSpec{});

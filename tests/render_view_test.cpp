@@ -35,7 +35,9 @@ TEST(RenderView, LayerListsParseAndPrintBack) {
     EXPECT_NE(std::string(e.what()).find("bogus"), std::string::npos);
     EXPECT_NE(std::string(e.what()).find("friction"), std::string::npos) << "the message lists the known layers";
   }
+  for (const char* list : {"rod,rod", "rod,", ",rod", "rod,,walls"}) EXPECT_THROW(parse_layer_list(list), InputError) << list;
   EXPECT_THROW(parse_centre("1,"), InputError);
+  EXPECT_THROW(parse_centre("1,2,"), InputError);
   EXPECT_THROW(parse_centre("1,2,3"), InputError);
   EXPECT_THROW(parse_centre("nan,1"), InputError);
   EXPECT_EQ(parse_centre("0.25,-1e-3"), Vec2(0.25, -1e-3));
@@ -166,12 +168,15 @@ TEST(RenderView, BadViewOptionsExit2NamingTheOption) {
   ScratchDir dir("view_cli");
   const std::string run = testing::make_run(dir, SyntheticLogSpec{});
   const std::pair<std::string, std::string> cases[] = {
-      {"--still 0.5 --png X --layers rod,bogus", "bogus"},
-      {"--still 0.5 --png X --hide nope", "nope"},
+      {"--still 0.5 --png X --layers rod,bogus", "--layers: unknown layer 'bogus'"},
+      {"--still 0.5 --png X --layers rod,rod", "--layers: layer 'rod' is listed twice"},
+      {"--still 0.5 --png X --layers rod,", "--layers: an empty layer name in 'rod,'"},
+      {"--still 0.5 --png X --hide nope", "--hide: unknown layer 'nope'"},
       {"--still 0.5 --png X --camera center", "--center"},
-      {"--still 0.5 --png X --center 1", "center"},
+      {"--still 0.5 --png X --center 1", "--center: expected X,Y in metres"},
+      {"--still 0.5 --png X --center 1,2,", "--center: expected X,Y in metres"},
       {"--still 0.5 --png X --camera follow --center 0.1,0.1", "--center goes with --camera center"},
-      {"--still 0.5 --png X --camera orbit", "camera"},
+      {"--still 0.5 --png X --camera orbit", "--camera: expected fit, follow or center, got 'orbit'"},
       {"--still 0.5", "--png"},
       {"--png X", "--still"},
       {"--plots P --overlay " + run, "--overlay"},

@@ -188,6 +188,8 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
       {"/api/frame.png?center=1,nan", "center"},
       {"/api/frame.png?camera=fit&center=0.1,0.1", "center"},  // the centre was ignored
       {"/api/frame.png?layers=walls,bogus", "layers"},
+      {"/api/frame.png?layers=walls,walls", "layers"},
+      {"/api/frame.png?center=0.1,0.2,", "center"},
       {"/api/frame.png?run=b", "run"},
       {"/api/frame.png?run=../../etc", "run"},
       {"/api/frame.png?overlay=b", "overlay"},
@@ -356,6 +358,8 @@ TEST(ReplayServer, CompareAlignsRunsBySimulatedTime) {
   const std::string run_a = synthetic_run(dir, "a", a), run_b = synthetic_run(dir, "b", b);
   LiveServer s({{run_a, run_b}});
   EXPECT_EQ(get_json(s, "/api/run?run=b")["frames"], 31);
+  EXPECT_EQ(get_json(s, "/api/run?run=b")["same_environment_as_a"], true);
+  EXPECT_FALSE(get_json(s, "/api/run?run=a").contains("same_environment_as_a"));
   render::FrameSource sa(run_a), sb(run_b);
   for (const double t : {0.0, 2.55, 5.9, 8.0}) {
     render::FrameState fa, fb;
@@ -380,6 +384,15 @@ TEST(ReplayServer, CompareAlignsRunsBySimulatedTime) {
   LiveServer reversed({{run_b, run_a}});
   EXPECT_NE(reversed.get("/api/frame.png?t=6&width=320&height=240&overlay=b")->body,
             reversed.get("/api/frame.png?t=9&width=320&height=240&overlay=b")->body);
+}
+
+// Run b from another maze: the page is told, to warn that its rod is drawn over run a's map.
+TEST(ReplayServer, RunBFromAnotherEnvironmentIsSaidToBe) {
+  ScratchDir dir("replay_other_environment");
+  render::SyntheticLogSpec a = long_spec(), b = long_spec();
+  b.grid = a.grid + 1;
+  LiveServer s({{synthetic_run(dir, "a", a), synthetic_run(dir, "b", b)}});
+  EXPECT_EQ(get_json(s, "/api/run?run=b")["same_environment_as_a"], false);
 }
 
 TEST(ReplayServer, BookmarksAreSavedAndAForeignFileIsLeftAlone) {

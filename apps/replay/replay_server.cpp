@@ -279,6 +279,10 @@ struct ReplayServer::Impl {
     ReplayRun& run = run_of(p);
     run.refresh();
     json info = run.info();
+    // Run b's rod drawn over run a's map (overlay) means nothing where their environments differ:
+    // the page says so.
+    if (&run != runs.front().get())
+      info["same_environment_as_a"] = same_environment(runs.front()->source().metadata(), run.source().metadata());
     info["runs"] = json::array();
     for (const auto& r : runs) info["runs"].push_back(r->id());
     send_json(res, info);

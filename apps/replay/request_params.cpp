@@ -82,8 +82,7 @@ render::View parse_view(const RequestParams& p) {
       v.camera = render::CameraMode::kCentre;
     }
   } catch (const InputError& e) {
-    const std::string what = e.what(), named = "center: ";  // the parameter is named once, by ParamError
-    throw ParamError("center", what.rfind(named, 0) == 0 ? what.substr(named.size()) : what);
+    throw ParamError("center", e.what());
   }
   const std::string camera = p.choice("camera", render::camera_name(v.camera), {"fit", "follow", "center"});
   v.camera = render::parse_camera(camera);

@@ -5,6 +5,7 @@
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
 #include "sim/io/csv_export.h"
+#include "sim/io/log_metadata.h"
 #include "sim/io/run_summary.h"
 #include "sim/log/frame_log.h"
 
@@ -62,8 +63,10 @@ int run_export_command(int argc, char** argv) {
   if (options.to < options.from) throw UsageError("--to must not be before --from");
   options.every = static_cast<std::size_t>(args.integer("every", 1, 1, 1000000000));
   options.overwrite = args.flag("force");
-  const FrameLogReader log(frame_log_path(args.positional().front()));
-  check_log_matches_summary(args.positional().front(), log.frame_count());
+  const std::string log_path = frame_log_path(args.positional().front());
+  const FrameLogReader log(log_path);
+  check_log_matches_summary(args.positional().front(), log.frame_count(),
+                            read_log_metadata(log.header().metadata, log_path).scene_hash);
   if (const std::string warning = incomplete_run_warning(args.positional().front()); !warning.empty())
     std::fprintf(stderr, "%s\n", warning.c_str());
   const auto files = export_csv(log, *dir, options);

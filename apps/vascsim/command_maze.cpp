@@ -4,8 +4,8 @@
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
+#include "apps/vascsim/document_output.h"
 #include "sim/io/maze_json.h"
-#include "sim/io/output_file.h"
 #include "sim/io/scene_reader.h"
 
 namespace vascsim::cli {
@@ -21,7 +21,7 @@ const std::vector<OptionSpec> kOptions = {
     {"solver", "NAME", "wall_follower or bfs (overrides the scene)"},
     {"corner-radius", "R", "path corner rounding radius in m (overrides the scene)"},
     {"speed", "V", "tip reference speed in m/s, for the trajectory duration (overrides the scene)"},
-    {"out", "FILE", "where to write the maze JSON (required)"},
+    {"out", "FILE", "where to write the maze JSON, or - for standard output (required)"},
     {"force", "", "overwrite FILE if it exists"},
     {"help", "", "show this help"},
 };
@@ -73,8 +73,8 @@ int run_maze_command(int argc, char** argv) {
   // Never replace the scene it was made from, nor a device or pipe, even with --force.
   std::vector<std::string> inputs;
   if (!scene.file.empty()) inputs.push_back(scene.file);
-  check_replaceable_output(*out, args.flag("force"), inputs);
-  write_file_atomically(*out, maze_document(scene));
+  check_document_output(*out, args.flag("force"), inputs);
+  if (!write_document_output(*out, maze_document(scene))) return 0;
   if (maze.explicit_walls)
     std::printf("wrote %s (%zu explicit walls)\n", out->c_str(), maze.walls.size());
   else

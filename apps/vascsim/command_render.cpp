@@ -94,21 +94,27 @@ int run_render_command(int argc, char** argv) {
         throw UsageError(std::string("--") + range_option + " chooses a video's frames; --still T draws the one picture at T");
   o.png_path = args.value("png").value_or("");
   o.overlay_run = args.value("overlay").value_or("");
-  try {
-    if (args.value("center")) {
-      o.view.centre = render::parse_centre(*args.value("center"));
-      o.view.camera = render::CameraMode::kCentre;
+  // The view parsers' messages say what was expected; the option is named here.
+  const auto view_option = [&args](const char* name, const auto& parse) {
+    const auto text = args.value(name);
+    if (!text) return;
+    try {
+      parse(*text);
+    } catch (const InputError& e) {
+      throw UsageError(std::string("--") + name + ": " + e.what());
     }
-    if (args.value("camera")) o.view.camera = render::parse_camera(*args.value("camera"));
-    if (o.view.camera == render::CameraMode::kCentre && !args.value("center"))
-      throw UsageError("--camera center needs --center X,Y");
-    if (o.view.camera != render::CameraMode::kCentre && args.value("center"))
-      throw UsageError("--center goes with --camera center (or no --camera), not --camera " + *args.value("camera"));
-    if (args.value("layers")) o.view.layers = render::parse_layer_list(*args.value("layers"));
-    if (args.value("hide")) o.view.layers = render::hide_layers(o.view.layers, *args.value("hide"));
-  } catch (const InputError& e) {
-    throw UsageError(e.what());
-  }
+  };
+  view_option("center", [&o](const std::string& t) {
+    o.view.centre = render::parse_centre(t);
+    o.view.camera = render::CameraMode::kCentre;
+  });
+  view_option("camera", [&o](const std::string& t) { o.view.camera = render::parse_camera(t); });
+  if (o.view.camera == render::CameraMode::kCentre && !args.value("center"))
+    throw UsageError("--camera center needs --center X,Y");
+  if (o.view.camera != render::CameraMode::kCentre && args.value("center"))
+    throw UsageError("--center goes with --camera center (or no --camera), not --camera " + *args.value("camera"));
+  view_option("layers", [&o](const std::string& t) { o.view.layers = render::parse_layer_list(t); });
+  view_option("hide", [&o](const std::string& t) { o.view.layers = render::hide_layers(o.view.layers, t); });
   o.view.zoom = args.number("zoom", 1.0, 1e-3, 1e3);
   o.view.actuation_px_per_newton = args.number("actuation-scale", 0.0, 0.0, 1e15);
   o.view.contact_px_per_newton = args.number("contact-scale", 0.0, 0.0, 1e15);

@@ -34,7 +34,7 @@ const std::vector<OptionSpec> kOptions = {
     {"force", "", "reuse DIR even if it holds files (they are replaced)"},
     {"duration", "T", "simulated time in s (overrides the scene's run.duration)"},
     {"quiet", "", "no progress line"},
-    {"max-log-size", "BYTES", "refuse a run whose frame log would exceed this (default 10G; suffixes k, M, G)"},
+    {"max-log-size", "BYTES", "refuse a run whose frame log would exceed this (default 10G; suffixes k or K, M, G)"},
     {"render", "", "render DIR/video.mp4 when the run ends (see vascsim render --help)"},
     {"help", "", "show this help"},
 };

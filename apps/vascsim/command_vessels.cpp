@@ -4,7 +4,7 @@
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
-#include "sim/io/output_file.h"
+#include "apps/vascsim/document_output.h"
 #include "sim/io/scene_reader.h"
 #include "sim/io/vessels_json.h"
 
@@ -14,7 +14,7 @@ namespace {
 
 const std::vector<OptionSpec> kOptions = {
     {"scene", "FILE", "a scene with a \"vessels\" section (required)"},
-    {"out", "FILE", "where to write the network JSON (required)"},
+    {"out", "FILE", "where to write the network JSON, or - for standard output (required)"},
     {"force", "", "overwrite FILE if it exists"},
     {"help", "", "show this help"},
 };
@@ -48,9 +48,8 @@ int run_vessels_command(int argc, char** argv) {
   // Never replace the scene or the mask image it was made from, nor a device or pipe, even with --force.
   std::vector<std::string> inputs{scene.file};
   if (scene.vessels.from_mask) inputs.push_back(scene.vessels.mask.resolved);
-  check_replaceable_output(*out, args.flag("force"), inputs);
-  const std::string doc = vessels_document(scene);
-  write_file_atomically(*out, doc);
+  check_document_output(*out, args.flag("force"), inputs);
+  if (!write_document_output(*out, vessels_document(scene))) return 0;
   std::printf("wrote %s (%s)\n", out->c_str(), scene.vessels.from_mask ? "traced from an image mask" : "vessel graph");
   return 0;
 }

@@ -1,5 +1,6 @@
 #include "apps/vascsim/commands.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -48,7 +49,9 @@ const std::vector<Command>& commands() {
   return table;
 }
 
-int run_command_line(int argc, char** argv) {
+namespace {
+
+int dispatch(int argc, char** argv) {
   if (argc == 2 && !std::strcmp(argv[1], "--version")) {
     std::printf("%s\n", version_line().c_str());
     return 0;
@@ -83,6 +86,24 @@ int run_command_line(int argc, char** argv) {
     std::fprintf(stderr, "vascsim %s: internal error: %s\n", command->name, e.what());
     return 3;
   }
+}
+
+}  // namespace
+
+int run_command_line(int argc, char** argv) {
+  const std::string name = argc >= 2 ? std::string("vascsim ") + argv[1] : "vascsim";
+  const int code = dispatch(argc, argv);
+  // What a script reads from standard output (a run's result line, a maze's JSON, a sweep's
+  // table) lost to a full disk must not end in exit 0, as it would once the buffer is dropped.
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int flush_errno = errno;
+  if (!flushed || std::ferror(stdout)) {
+    std::fprintf(stderr, "%s: cannot write to standard output (%s)\n", name.c_str(),
+                 flush_errno ? std::strerror(flush_errno) : "write error");
+    return code == 0 ? 2 : code;
+  }
+  return code;
 }
 
 }  // namespace vascsim::cli

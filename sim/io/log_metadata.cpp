@@ -1,5 +1,6 @@
 #include "sim/io/log_metadata.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "sim/io/json_fields.h"
@@ -98,6 +99,14 @@ LogMetadata read_log_metadata(const std::string& text, const std::string& label)
   }
   // Newer writers may add keys; an older reader ignores them rather than refusing the log.
   return m;
+}
+
+bool same_environment(const LogMetadata& a, const LogMetadata& b) {
+  const auto same_wall = [](const WallSegment& p, const WallSegment& q) {
+    return p.a == q.a && p.b == q.b && p.thickness == q.thickness;
+  };
+  return a.bounds.min == b.bounds.min && a.bounds.max == b.bounds.max && a.lumen == b.lumen &&
+         std::equal(a.walls.begin(), a.walls.end(), b.walls.begin(), b.walls.end(), same_wall);
 }
 
 }  // namespace vascsim

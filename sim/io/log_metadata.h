@@ -33,6 +33,9 @@ struct LogMetadata {
 std::string write_log_metadata(const LogMetadata& metadata);
 // Throws InputError naming `label` (usually the log's path) if the text is not valid metadata.
 LogMetadata read_log_metadata(const std::string& text, const std::string& label);
+// Whether two logs ran in the same environment (bounds, walls and lumen equal), so that one run's
+// rod drawn over the other's map means something.
+bool same_environment(const LogMetadata& a, const LogMetadata& b);
 
 
 }  // namespace vascsim

@@ -96,7 +96,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   return j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n";  // a scene file name need not be UTF-8
 }
 
-void check_log_matches_summary(const std::string& run_path, std::size_t log_frames) {
+void check_log_matches_summary(const std::string& run_path, std::size_t log_frames, const std::string& log_scene_hash) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_directory(run_path, ec)) return;
@@ -109,13 +109,21 @@ void check_log_matches_summary(const std::string& run_path, std::size_t log_fram
     return;
   }
   if (!summary) return;
+  const fs::path log_path = fs::path(run_path) / "frames.vlog", summary_path = fs::path(run_path) / "summary.json";
+  const json::json_pointer hash_pointer("/provenance/scene_hash");
+  if (summary->is_object() && summary->contains(hash_pointer) && (*summary)[hash_pointer].is_string()) {
+    const auto summary_hash = (*summary)[hash_pointer].get<std::string>();
+    if (!summary_hash.empty() && !log_scene_hash.empty() && summary_hash != log_scene_hash)
+      throw InputError(summary_path.string() + ": /provenance/scene_hash is " + summary_hash + ", but " + log_path.string() +
+                       " was written by a run of the scene with hash " + log_scene_hash +
+                       ": the summary is another run's (run the scene again, or copy the run directory whole)");
+  }
   const json* frames = summary->is_object() && summary->contains("frames") ? &(*summary)["frames"] : nullptr;
   if (!frames || !frames->is_number_unsigned()) return;
   const auto expected = frames->get<std::uint64_t>();
   if (expected != log_frames)
-    throw InputError((fs::path(run_path) / "frames.vlog").string() + ": " + std::to_string(log_frames) + " frames, but " +
-                     (fs::path(run_path) / "summary.json").string() + " says the run wrote " + std::to_string(expected) +
-                     ": the log was cut or appended to after the run ended (run it again, or copy it again)");
+    throw InputError(log_path.string() + ": " + std::to_string(log_frames) + " frames, but " + summary_path.string() +
+                     " says the run wrote " + std::to_string(expected) + ": the log was cut or appended to after the run ended (run it again, or copy it again)");
 }
 
 }  // namespace vascsim

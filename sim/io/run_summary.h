@@ -14,6 +14,8 @@ std::string run_summary_json(const Scene& scene, const Run& run);
 // run ended (a copy cut short, a log concatenated onto it), which would otherwise be drawn or
 // exported silently shorter or with a frame of garbage. A log file named directly, a run without
 // a summary (stopped or still running) or a summary without a frame count is not checked.
-void check_log_matches_summary(const std::string& run_path, std::size_t log_frames);
+// Also throws if both name a scene hash (provenance) and they differ: the summary is another
+// run's (copied beside this log, or left by a run of another scene with as many frames).
+void check_log_matches_summary(const std::string& run_path, std::size_t log_frames, const std::string& log_scene_hash);
 
 }  // namespace vascsim

@@ -9,7 +9,7 @@ from its one stdout line, and checks in the page: no JS errors; 403 without the 
 keys and by dragging the timeline; that toggling a layer shows exactly the server's frame for those
 layers; the hover readout against /api/nodes; a deep link; bookmarks; the help overlay; an MP4
 export checked with the probe (libavformat); compare mode with the tip distance against
-/api/compare. Screenshots of each mode go to --screenshots. Prints `N passed, M failed` last and
+/api/compare; with --run-c (another environment), the overlay's warning. Screenshots of each mode go to --screenshots. Prints `N passed, M failed` last and
 exits non-zero on any failure.
 
 For developing the page without the C++ server, `--url URL [--url-b URL_B]` uses servers already
@@ -699,7 +699,29 @@ def check_compare(page, shots):
     clip = page.d.find_element(By.ID, 'command-clip').get_attribute('value')
     R.check(f" --overlay {page.api.get('/api/run', run='b')['path']}" in clip,
             'compare: "copy as command" draws run b over run a too (--overlay B)', clip)
+    label = page.d.find_element(By.ID, 'map-label-a').text
+    R.check("B's rod" in label and 'another environment' not in label,
+            'compare: the overlay of a run in the same maze carries no environment warning', label)
     page.shot(shots, 'compare_overlay.png')
+    page.collect_log()
+
+
+def check_other_environment(page, shots):
+    """Run b from another environment overlaid on run a's map: the map's label says so."""
+    page.open(page.api.page)
+    R.check(page.api.get('/api/run', run='b').get('same_environment_as_a') is False,
+            'other environment: /api/run says run b ran elsewhere', '')
+    from selenium.webdriver.support.ui import Select
+    Select(page.d.find_element(By.ID, 'compare-mode')).select_by_value('overlay')
+    page.ready()
+    page.wait(lambda d: 'B ran in another environment' in d.find_element(By.ID, 'map-label-a').text,
+              "the map label's warning that B ran in another environment")
+    Select(page.d.find_element(By.ID, 'compare-mode')).select_by_value('side')
+    page.wait(lambda d: 'another environment' not in d.find_element(By.ID, 'map-label-a').text,
+              'the warning to go in the side-by-side view, where each run has its own map')
+    Select(page.d.find_element(By.ID, 'compare-mode')).select_by_value('overlay')
+    page.ready()
+    page.shot(shots, 'compare_overlay_other_environment.png')
     page.collect_log()
 
 
@@ -802,6 +824,7 @@ def main():
     ap.add_argument('--vascsim', help='the vascsim executable')
     ap.add_argument('--run', help='run directory A')
     ap.add_argument('--run-b', help='run directory B (compare mode)')
+    ap.add_argument('--run-c', help='a run in another environment than A (the overlay warning)')
     ap.add_argument('--probe', help='the MP4 probe: PROBE FILE prints {"codec", "frames", "width", "height", "duration"}')
     ap.add_argument('--screenshots', help='directory for screenshots')
     ap.add_argument('--url', help='development only: use this running server instead of starting vascsim')
@@ -859,6 +882,13 @@ def main():
                 R.check(not page_b.severe, 'no JS errors in the browser log (compare)', '; '.join(page_b.severe[:5]))
                 if server:
                     server.stop('compare')
+                    server = None
+                if args.run_c and not args.url:
+                    server = Server(args.vascsim, [args.run, args.run_c])
+                    page_c = Page(driver, Api(server.url))
+                    section('overlay of a run in another environment', check_other_environment, page_c, args.screenshots)
+                    R.check(not page_c.severe, 'no JS errors in the browser log (other environment)', '; '.join(page_c.severe[:5]))
+                    server.stop('other environment')
                     server = None
             else:
                 R.skip('compare mode', 'no --run-b / --url-b')

@@ -473,6 +473,8 @@
       let text = `<span class="swatch" style="background:var(--run-${r})"></span><b>${r.toUpperCase()}</b> ${esc(info.path)}`;
       if (r === 'a' && S.compareMode === 'overlay') {
         text += ` <span class="dim">+ B's rod</span> <span class="swatch" style="background:var(--run-b)"></span>`;
+        if (S.info.b.same_environment_as_a === false)
+          text += ' <span class="map-warning">B ran in another environment (walls or lumen differ): its rod is drawn over A\'s map</span>';
       }
       if (S.t > info.last_time + 1e-9) text += ` <span class="dim">· ended at ${fmtTime(info.last_time)}</span>`;
       const el = $(`map-label-${r}`);
