@@ -193,6 +193,24 @@ TEST(SweepCli, ASweepKilledWithSigkillTakesItsRunsWithIt) {
   EXPECT_FALSE(fs::exists(out + "/runs/0000/status.json")) << "a run the sweep did not see end is not recorded";
 }
 
+// Stopped while it writes the sweep directory (thousands of run scenes), a sweep says what it
+// left and how to go on, instead of ending silently; the same command then completes it.
+TEST(SweepCli, StoppedWhileWritingItsDirectorySaysSoAndIsTakenUpAgain) {
+  const std::string dir = fresh_temp_dir("sweep_stopped_writing");
+  const std::string sweep = write_maze_sweep(dir, "seeds", R"({"/maze/seed": {"from": 1, "to": 4000}})", 0.3);
+  const std::string out = dir + "/out";
+  const std::string command = std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + out + " --emit gnu-parallel";
+  const CommandResult r = run_shell("{ " + command + " & pid=$!; until [ -e " + out + "/runs ] || ! kill -0 $pid 2>/dev/null; "
+                                    "do sleep 0.01; done; kill -TERM $pid; wait $pid; echo \"exit code $?\"; }");
+  ASSERT_FALSE(fs::exists(out + "/manifest.json")) << "the sweep wrote its directory before the signal; make it larger\n" << r.output;
+  EXPECT_TRUE(has(r.output, "exit code 143")) << r.output;
+  EXPECT_TRUE(has(r.output, "vascsim sweep: interrupted while writing the sweep directory " + out +
+                                "; the same command takes it up again")) << r.output;
+  const CommandResult again = run_shell(command);
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_TRUE(fs::exists(out + "/runs/3999/scene.json"));
+}
+
 TEST(SweepCli, ShowsProgressWithCountsAndAnEtaOnATerminalOnly) {
   const std::string dir = fresh_temp_dir("sweep_progress");
   const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);
@@ -258,6 +276,7 @@ TEST(SweepCli, EmitsGnuParallelAndSlurmFiles) {
   const std::string dir = fresh_temp_dir("sweep_emit");
   const std::string sweep = write_maze_sweep(dir, "kp", kAxes, 0.3);
   const std::string out = dir + "/out";
+  write_text(dir + "/hosts", "# the lab's nodes\n4/node1\n");
   const CommandResult p = sweep_command(sweep + " --out " + out + " --emit gnu-parallel --jobs 2 --sshloginfile " + dir + "/hosts");
   ASSERT_EQ(p.exit_code, 0) << p.output;
   EXPECT_EQ(read_text(out + "/parallel/jobs.txt"), "0\n1\n2\n3\n4\n5\n6\n7\n");
@@ -305,6 +324,44 @@ TEST(SweepCli, EmitsGnuParallelAndSlurmFiles) {
   const std::string spaced = write_maze_sweep(dir, "spaced", kAxes, 0.3, R"(, "name": "kp sweep")");
   ASSERT_EQ(sweep_command(spaced + " --out " + dir + "/spaced --emit slurm").exit_code, 0);
   EXPECT_TRUE(has(read_text(dir + "/spaced/slurm/array.sbatch"), "#SBATCH --job-name=vascsim-kp_sweep\n"));
+}
+
+// run.sh runs later, maybe from another directory: a host list parallel would not find there, or
+// that names no host, is refused at --emit, before any file, with the file's name.
+TEST(SweepCli, GnuParallelHostListIsCheckedWhenEmitted) {
+  const std::string dir = fresh_temp_dir("sweep_hosts");
+  const std::string sweep = write_maze_sweep(dir, "kp", R"({"/control/kp": [1, 2]})", 0.3);
+  const auto emit = [&](const std::string& out, const std::string& hosts, const std::string& env = "") {
+    return run_shell("cd " + dir + " && " + env + " " + std::string(VASCSIM_EXE) + " sweep " + sweep + " --out " + out +
+                     " --emit gnu-parallel --sshloginfile " + hosts);
+  };
+  const CommandResult missing = emit("missing", "nodes.txt", "PARALLEL_HOME=" + dir + "/config");
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_TRUE(has(missing.output, "--sshloginfile nodes.txt: " + dir + "/nodes.txt does not exist (parallel's config directory")) << missing.output;
+  EXPECT_FALSE(fs::exists(dir + "/missing")) << "a refused emit made the sweep directory";
+
+  write_text(dir + "/comments.txt", "# none yet\n\n   # indented comment\n  \n");
+  const CommandResult empty = emit("empty", "comments.txt");
+  EXPECT_EQ(empty.exit_code, 2) << empty.output;
+  EXPECT_TRUE(has(empty.output, dir + "/comments.txt lists no host")) << empty.output;
+  const CommandResult stdin_list = emit("stdin", "-");
+  EXPECT_EQ(stdin_list.exit_code, 2) << stdin_list.output;
+  EXPECT_TRUE(has(stdin_list.output, "standard input is not a host list")) << stdin_list.output;
+  EXPECT_EQ(emit("directory", dir).exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir + "/empty") || fs::exists(dir + "/stdin") || fs::exists(dir + "/directory"));
+
+  // Found where parallel looks: this directory (named absolutely in run.sh), then its config
+  // directory; '..' is the config directory's sshloginfile.
+  fs::create_directories(dir + "/config");
+  write_text(dir + "/config/nodes.txt", "2/node7\n");
+  write_text(dir + "/config/sshloginfile", "node8\n");
+  ASSERT_EQ(emit("out_config", "nodes.txt", "PARALLEL_HOME=" + dir + "/config").exit_code, 0);
+  EXPECT_TRUE(has(read_text(dir + "/out_config/parallel/run.sh"), "--sshloginfile " + dir + "/config/nodes.txt "));
+  ASSERT_EQ(emit("out_shorthand", "..", "PARALLEL_HOME=" + dir + "/config").exit_code, 0);
+  EXPECT_TRUE(has(read_text(dir + "/out_shorthand/parallel/run.sh"), "--sshloginfile " + dir + "/config/sshloginfile "));
+  write_text(dir + "/nodes.txt", "node9\n");
+  ASSERT_EQ(emit("out_here", "nodes.txt", "PARALLEL_HOME=" + dir + "/config").exit_code, 0);
+  EXPECT_TRUE(has(read_text(dir + "/out_here/parallel/run.sh"), "--sshloginfile " + dir + "/nodes.txt "));
 }
 
 TEST(SweepCli, SlurmArraysLongerThanAChunkAreSplitWithOffsets) {

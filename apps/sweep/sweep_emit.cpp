@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <vector>
 
 #include "apps/sweep/run_process.h"
 #include "sim/io/output_file.h"
@@ -63,6 +66,54 @@ std::string shell_quote(const std::string& text) {
   return out + "'";
 }
 
+namespace {
+// parallel's own directory for '..' and relative host-list names: the first that exists of
+// $PARALLEL_HOME, $XDG_CONFIG_HOME/parallel, each of $XDG_CONFIG_DIRS/parallel and
+// $HOME/.parallel ($HOME defaults to /tmp), else $HOME/.parallel (parallel 20221122's order).
+fs::path parallel_config_dir() {
+  const auto env = [](const char* name) { const char* v = std::getenv(name); return std::string(v ? v : ""); };
+  const std::string home = env("HOME").empty() ? "/tmp" : env("HOME");
+  std::vector<std::string> candidates = {env("PARALLEL_HOME"), env("XDG_CONFIG_HOME") + "/parallel"};
+  const std::string dirs = env("XDG_CONFIG_DIRS");
+  for (std::size_t from = 0; from <= dirs.size();) {
+    const std::size_t colon = std::min(dirs.find(':', from), dirs.size());
+    candidates.push_back(dirs.substr(from, colon - from) + "/parallel");
+    from = colon + 1;
+  }
+  candidates.push_back(home + "/.parallel");
+  std::error_code ec;
+  for (const auto& c : candidates)
+    if (!c.empty() && fs::is_directory(c, ec)) return c;
+  return home + "/.parallel";
+}
+}  // namespace
+
+std::string resolve_sshloginfile(const std::string& name) {
+  const std::string what = "--sshloginfile " + name;
+  if (name.empty()) throw InputError("--sshloginfile: expected a host list file, got ''");
+  if (name == "-") throw InputError(what + ": run.sh runs later and its standard input is not a host list; give a file");
+  const fs::path config = parallel_config_dir();
+  fs::path file = name == ".." ? config / "sshloginfile" : name == "." ? fs::path("/etc/parallel/sshloginfile") : fs::path(name);
+  std::error_code ec;
+  const bool shorthand = name == ".." || name == ".";
+  const bool relative = !shorthand && file.is_relative();
+  if (relative && !fs::exists(file, ec) && fs::exists(config / file, ec)) file = config / file;
+  const std::string path = absolute_path(file.string());
+  if (!fs::exists(path, ec))
+    throw InputError(what + ": " + path + " does not exist" +
+                     (relative ? " (parallel's config directory " + config.string() + " has no such file either)" : ""));
+  if (!fs::is_regular_file(path, ec)) throw InputError(what + ": " + path + " is not a file of host lines");
+  std::ifstream in(path);
+  if (!in) throw InputError(what + ": " + path + " cannot be read");
+  // parallel skips lines that are blank or whose first non-blank character is '#'; any other
+  // line is a host.
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t first = line.find_first_not_of(" \t\r\f\v");
+    if (first != std::string::npos && line[first] != '#') return path;
+  }
+  throw InputError(what + ": " + path + " lists no host (only blank lines and '#' comments)");
+}
+
 std::vector<std::string> emit_gnu_parallel(const SweepDirectory& sweep, const ParallelOptions& options, bool force) {
   const std::string dir = absolute_path(sweep.dir), exe = vascsim_executable();
   const fs::path out = fs::path(dir) / "parallel";
@@ -81,7 +132,7 @@ std::vector<std::string> emit_gnu_parallel(const SweepDirectory& sweep, const Pa
   if (options.jobs > 0) line += " --jobs " + std::to_string(options.jobs);
   // --resume skips the jobs the joblog lists; --resume-failed also re-runs the failed ones.
   line += " --joblog " + shell_quote((out / "joblog").string()) + (options.retry_failed ? " --resume-failed" : " --resume");
-  if (!options.sshloginfile.empty()) line += " --sshloginfile " + shell_quote(absolute_path(options.sshloginfile));
+  if (!options.sshloginfile.empty()) line += " --sshloginfile " + shell_quote(resolve_sshloginfile(options.sshloginfile));
   line += " --arg-file " + shell_quote(jobs) + " " + shell_quote(command);
   const std::string text =
       "#!/bin/sh\n"

@@ -43,6 +43,12 @@ std::vector<std::string> emit_slurm(const SweepDirectory& sweep, const SlurmOpti
 // What emit_slurm refuses, checked before a sweep directory `sweep_dir` is made: a partition or
 // time that is not one #SBATCH word, a directory or executable path #SBATCH lines cannot name.
 void check_slurm_options(const SlurmOptions& options, const std::string& sweep_dir);
+// The host list `name` for parallel --sshloginfile as the absolute path run.sh names, found where
+// parallel looks when run.sh runs from elsewhere (this directory, then ~/.parallel; '..' and '.'
+// are parallel's ~/.parallel/sshloginfile and /etc/parallel/sshloginfile). Throws InputError for
+// '-' (run.sh's stdin is not a host list), a file that is missing, unreadable or not a regular
+// file, and a list without a host line (parallel would run nothing, silently).
+std::string resolve_sshloginfile(const std::string& name);
 
 // `text` quoted for a POSIX shell.
 std::string shell_quote(const std::string& text);

@@ -19,15 +19,25 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string cell(const std::string& text, std::size_t width) {
-  std::string t = text.size() > width - 1 ? text.substr(0, width - 4) + "..." : text;
-  t.resize(width, ' ');
-  return t;
-}
-
-std::string trim_right(std::string s) {
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
+// Lines of cells, each column as wide as its widest cell and two spaces apart: nothing is cut
+// (cells of a fixed width cut long pointers, object values and wide figures to "...").
+std::string aligned_lines(const std::vector<std::vector<std::string>>& lines) {
+  std::vector<std::size_t> width;
+  for (const auto& line : lines) {
+    width.resize(std::max(width.size(), line.size()), 0);
+    for (std::size_t c = 0; c < line.size(); ++c) width[c] = std::max(width[c], line[c].size());
+  }
+  std::string out;
+  for (const auto& line : lines) {
+    std::string text;
+    for (std::size_t c = 0; c < line.size(); ++c) {
+      text += line[c];
+      if (c + 1 < line.size()) text += std::string(width[c] - line[c].size() + 2, ' ');
+    }
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    out += text + "\n";
+  }
+  return out;
 }
 
 std::string figure_text(double v) {
@@ -126,6 +136,9 @@ std::vector<std::size_t> headline_metrics(bool navigation) {
 }
 
 std::string summary_table(const SweepManifest& m, const std::vector<RunOutcome>& outcomes, bool navigation) {
+  // An axis value longer than this (a whole vessel network, say) is named "value K" in its row
+  // and given in full below the table, so the columns stay readable.
+  constexpr std::size_t kLongestValueCell = 32;
   const auto& all = sweep_metrics();
   const std::vector<std::size_t> metrics = headline_metrics(navigation);
   std::size_t done = 0, failed = 0, missing = 0;
@@ -134,23 +147,31 @@ std::string summary_table(const SweepManifest& m, const std::vector<RunOutcome>&
                     std::to_string(done) + " done, " + std::to_string(failed) + " failed, " + std::to_string(missing) +
                     " missing\n";
   for (const auto& axis : summarise_sweep(m, outcomes)) {
-    std::string header = "\n" + cell(axis.pointer, 18) + cell("runs", 6) + cell("failed", 8) + cell("missing", 9) +
-                         (navigation ? cell("goal", 7) : "");
-    for (std::size_t i : metrics)
-      header += cell(std::string(all[i].label) + (*all[i].unit ? std::string(" (") + all[i].unit + ")" : ""), 26);
-    std::string units = std::string(18 + 6 + 8 + 9, ' ') + (navigation ? cell("", 7) : "");
-    for (std::size_t n = 0; n < metrics.size(); ++n) units += cell("mean [min, max]", 26);
-    out += trim_right(header) + "\n" + trim_right(units) + "\n";
-    for (const auto& v : axis.values) {
-      std::string row = cell(sweep_value_text(v.value), 18) + cell(std::to_string(v.runs), 6) +
-                        cell(std::to_string(v.failed), 8) + cell(std::to_string(v.missing), 9);
-      if (navigation) row += cell(std::to_string(v.goal_reached) + "/" + std::to_string(v.runs), 7);
-      for (std::size_t i : metrics)
-        row += cell(figure_text(v.mean[i] * all[i].scale) + " [" + figure_text(v.min[i] * all[i].scale) + ", " +
-                        figure_text(v.max[i] * all[i].scale) + "]",
-                    26);
-      out += trim_right(row) + "\n";
+    std::vector<std::string> header = {axis.pointer, "runs", "failed", "missing"}, units = {"", "", "", ""};
+    if (navigation) header.push_back("goal"), units.push_back("");
+    for (std::size_t i : metrics) {
+      header.push_back(std::string(all[i].label) + (*all[i].unit ? std::string(" (") + all[i].unit + ")" : ""));
+      units.push_back("mean [min, max]");
     }
+    std::vector<std::vector<std::string>> lines = {header, units};
+    std::string legend;
+    for (std::size_t k = 0; k < axis.values.size(); ++k) {
+      const auto& v = axis.values[k];
+      std::string value = sweep_value_text(v.value);
+      if (value.size() > kLongestValueCell) {
+        legend += "  value " + std::to_string(k + 1) + ": " + value + "\n";
+        value = "value " + std::to_string(k + 1);
+      }
+      std::vector<std::string> row = {value, std::to_string(v.runs), std::to_string(v.failed), std::to_string(v.missing)};
+      // Goals of the completed runs, as the figures are ("0/3" for three missing runs read as
+      // three runs that missed the goal).
+      if (navigation) row.push_back(v.done ? std::to_string(v.goal_reached) + "/" + std::to_string(v.done) : "-");
+      for (std::size_t i : metrics)
+        row.push_back(figure_text(v.mean[i] * all[i].scale) + " [" + figure_text(v.min[i] * all[i].scale) + ", " +
+                      figure_text(v.max[i] * all[i].scale) + "]");
+      lines.push_back(std::move(row));
+    }
+    out += "\n" + aligned_lines(lines) + legend;
   }
   return out;
 }

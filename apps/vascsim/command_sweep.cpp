@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "apps/sweep/sweep_runner.h"
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
+#include "sim/io/output_file.h"
 #include "sim/io/sweep_expand.h"
 #include "sim/io/sweep_outcome.h"
 #include "sim/io/sweep_spec.h"
@@ -190,6 +192,12 @@ int run_sweep_command(int argc, char** argv) {
     slurm.retry_failed = args.flag("retry-failed");
     sweep::check_slurm_options(slurm, args.value("out").value_or(input));
   }
+  sweep::ParallelOptions parallel;
+  if (emit && *emit == "gnu-parallel") {
+    parallel.jobs = args.value("jobs") ? jobs : 0;
+    if (const auto hosts = args.value("sshloginfile")) parallel.sshloginfile = sweep::resolve_sshloginfile(*hosts);
+    parallel.retry_failed = args.flag("retry-failed");
+  }
 
   // The sweep directory: made from a sweep file, or an existing one.
   sweep::SweepDirectory dir;
@@ -200,8 +208,10 @@ int run_sweep_command(int argc, char** argv) {
     dir = sweep::open_sweep_directory(input);
   } else {
     if (args.value("run-index")) throw UsageError("--run-index needs the sweep directory DIR, not the sweep file");
+    std::optional<NoticeOnSignal> notice(std::in_place, "vascsim sweep: interrupted while checking the sweep's scenes; nothing was written");
     const SweepSpec spec = read_sweep_file(input);
     const SweepPlan plan = expand_sweep(spec);
+    notice.reset();
     for (const SweepUnusedField& u : plan.unused)
       std::fprintf(stderr, "vascsim sweep: warning: %s has no effect in %zu of %zu runs: %s (each run's summary.json /unused_fields)\n",
                    u.pointer.c_str(), u.runs, plan.runs.size(), u.why.c_str());
@@ -215,7 +225,10 @@ int run_sweep_command(int argc, char** argv) {
     const auto out = args.value("out");
     if (!out) throw UsageError("--out DIR is required with a SWEEP file");
     bool resumed = false;
+    notice.emplace("vascsim sweep: interrupted while writing the sweep directory " + *out +
+                   "; the same command takes it up again");
     dir = sweep::prepare_sweep_directory(plan, read_text(input), *out, args.flag("force"), resumed);
+    notice.reset();
     if (!quiet)
       std::printf("sweep %s: %zu run%s in %s%s\n", spec.name.c_str(), plan.runs.size(), plan.runs.size() == 1 ? "" : "s",
                   out->c_str(), resumed ? " (resuming)" : "");
@@ -225,11 +238,7 @@ int run_sweep_command(int argc, char** argv) {
   if (emit) {
     std::vector<std::string> written;
     if (*emit == "gnu-parallel") {
-      sweep::ParallelOptions o;
-      o.jobs = args.value("jobs") ? jobs : 0;
-      o.sshloginfile = args.value("sshloginfile").value_or("");
-      o.retry_failed = args.flag("retry-failed");
-      written = sweep::emit_gnu_parallel(dir, o, args.flag("force"));
+      written = sweep::emit_gnu_parallel(dir, parallel, args.flag("force"));
       std::printf("wrote %s (%zu %s)\nrun it:   sh %s\nthen:     vascsim sweep merge %s\n", written[1].c_str(), count,
                   count == 1 ? "entry" : "entries", sweep::shell_quote(written[0]).c_str(), sweep::shell_quote(dir.dir).c_str());
     } else {

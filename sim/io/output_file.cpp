@@ -213,9 +213,21 @@ struct GuardedName {
 GuardedName g_guarded[64];
 constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP};
 
+// NoticeOnSignal's message, in the same kind of storage: set (2) or not.
+struct Notice {
+  std::atomic<int> state{0};
+  char text[1024];
+  std::size_t size = 0;
+};
+Notice g_notice;
+
 extern "C" void remove_guarded_names(int signal) {
   for (GuardedName& g : g_guarded)
     if (g.state.load() == 2) ::unlink(g.path);  // async-signal-safe
+  if (g_notice.state.load() == 2) {
+    const ssize_t written = ::write(STDERR_FILENO, g_notice.text, g_notice.size);  // async-signal-safe
+    (void)written;
+  }
   ::signal(signal, SIG_DFL);
   ::raise(signal);
 }
@@ -255,5 +267,16 @@ RemovedOnSignal::RemovedOnSignal(const std::string& path) {
 RemovedOnSignal::~RemovedOnSignal() {
   if (slot_ >= 0) g_guarded[slot_].state.store(0);
 }
+
+NoticeOnSignal::NoticeOnSignal(const std::string& message) {
+  install_cleanup_handlers();
+  g_notice.state.store(1);
+  const std::string text = message.substr(0, sizeof g_notice.text - 2) + "\n";
+  std::memcpy(g_notice.text, text.data(), text.size());
+  g_notice.size = text.size();
+  g_notice.state.store(2);
+}
+
+NoticeOnSignal::~NoticeOnSignal() { g_notice.state.store(0); }
 
 }  // namespace vascsim

@@ -37,6 +37,18 @@ class RemovedOnSignal {
   int slot_ = -1;
 };
 
+// While it lives, SIGINT, SIGTERM or SIGHUP (where they would end the process, as for
+// RemovedOnSignal) first print `message` and a newline on stderr, so a user who stops a long
+// step learns what it left (a sweep directory half written, say) instead of a silent exit.
+// One notice at a time: a newer one replaces an older one until it ends.
+class NoticeOnSignal {
+ public:
+  explicit NoticeOnSignal(const std::string& message);
+  ~NoticeOnSignal();
+  NoticeOnSignal(const NoticeOnSignal&) = delete;
+  NoticeOnSignal& operator=(const NoticeOnSignal&) = delete;
+};
+
 // Files that appear together or not at all (the CSV files of one export): each is written under
 // its temporary name as it is added, and commit() renames them all into place; destroyed before
 // that, the set removes its temporaries, so an error halfway (a full disk) leaves none of them.
