@@ -441,6 +441,23 @@ TEST(ReplayServer, BookmarksAreSavedAndAForeignFileIsLeftAlone) {
   EXPECT_NE(named.value("error", "").find("bookmarks.json: /bookmarks/1/t: expected a time in seconds"), std::string::npos) << named.dump();
   EXPECT_EQ(s.post("/api/bookmarks", R"({"name": "x", "t": 1})")->status, 500);
   EXPECT_EQ(vascsim::test::read_text(run + "/bookmarks.json"), edited);
+  // A number the file holds that would be written back changed (another tool's 128-bit id was
+  // rounded to a double) is refused, not rounded; so is one posted.
+  const std::string big = R"({"format": "vascsim-bookmarks/1", "bookmarks": [{"name": "a", "t": 1, "id": 123456789012345678901234567}]})";
+  vascsim::test::write_text(run + "/bookmarks.json", big);
+  EXPECT_EQ(get_json(s, "/api/bookmarks")["bookmarks"].size(), 1u) << "shown as it is";
+  const auto rounded = s.post("/api/bookmarks", R"({"name": "x", "t": 1})");
+  ASSERT_TRUE(rounded);
+  EXPECT_EQ(rounded->status, 500);
+  EXPECT_NE(rounded->body.find("bookmarks.json: /bookmarks/0/id: 123456789012345678901234567: more digits"), std::string::npos)
+      << rounded->body;
+  EXPECT_EQ(vascsim::test::read_text(run + "/bookmarks.json"), big);
+  fs::remove(run + "/bookmarks.json");
+  const auto posted = s.post("/api/bookmarks", R"({"name": "x", "t": 1, "id": 123456789012345678901234567})");
+  ASSERT_TRUE(posted);
+  EXPECT_EQ(posted->status, 400);
+  EXPECT_NE(posted->body.find("/id: 123456789012345678901234567: more digits than a bookmark keeps"), std::string::npos) << posted->body;
+  EXPECT_FALSE(fs::exists(run + "/bookmarks.json"));
 }
 
 // A run repeated into the served directory (`vascsim run --force` removes the log and writes a

@@ -42,7 +42,7 @@ bool readable_name(const std::string& name) {
 
 // The whole file: other tools (or a later version) may keep their own keys beside "bookmarks",
 // and adding a bookmark keeps them.
-json load_bookmark_file(const std::string& path) {
+json load_bookmark_file(const std::string& path, std::string* text_read = nullptr) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return json{{"format", "vascsim-bookmarks/1"}, {"bookmarks", json::array()}};
   if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > (16u << 20))
@@ -50,6 +50,7 @@ json load_bookmark_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
+  if (text_read) *text_read = text.str();
   json doc;
   try {
     doc = io::parse_json_strictly(text.str(), path);
@@ -108,8 +109,13 @@ json add_bookmark(const std::string& path, const json& b) {
     throw ParamError(field.empty() ? "body" : field, problem);
   // Another server on this run may add one at the same moment: read, add and write in turn.
   const DirectoryLock lock(std::filesystem::path(path).parent_path().string());
-  json doc = load_bookmark_file(path);
+  std::string text;
+  json doc = load_bookmark_file(path, &text);
   checked_bookmarks(path, doc);
+  // The file is written back whole: a number it would change is refused, not rounded.
+  if (const std::string inexact = io::first_inexact_number(text); !inexact.empty())
+    throw InputError(path + ": " + inexact + ": more digits than vascsim can write back (a 64-bit integer or a double); "
+                     "left untouched (write it as a string to add bookmarks here)");
   json& list = doc["bookmarks"];
   if (list.size() >= kMaxBookmarks) throw ParamError("name", "this run already has 10000 bookmarks");
   json entry = b;

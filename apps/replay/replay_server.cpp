@@ -403,6 +403,8 @@ struct ReplayServer::Impl {
       } catch (const InputError& e) {
         throw ParamError("body", std::string(e.what()) + "; expected JSON {\"name\", \"t\", \"view\"}");
       }
+      if (const std::string inexact = io::first_inexact_number(req.body); !inexact.empty())
+        throw ParamError("body", inexact + ": more digits than a bookmark keeps (a 64-bit integer or a double); send it as a string");
       list = add_bookmark(run.bookmarks_path(), body);
     } else {
       list = load_bookmarks(run.bookmarks_path());

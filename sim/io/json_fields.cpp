@@ -115,6 +115,92 @@ json parse_json_strictly(const std::string& text, const std::string& label) {
   }
 }
 
+namespace {
+
+// A JSON number as sign, significant digits (no leading or trailing zeros) and the exponent of
+// the first digit's place: "-0.0120e3" and "-12.0" both become {true, "12", 2}.
+struct Decimal {
+  bool negative = false;
+  std::string digits;
+  long exponent = 0;
+  bool operator==(const Decimal& o) const { return negative == o.negative && digits == o.digits && exponent == o.exponent; }
+};
+
+Decimal decimal_of(const std::string& number) {
+  Decimal d;
+  std::size_t i = 0;
+  if (i < number.size() && number[i] == '-') d.negative = true, ++i;
+  long point = 0;
+  bool after_point = false;
+  for (; i < number.size() && number[i] != 'e' && number[i] != 'E'; ++i) {
+    if (number[i] == '.') after_point = true;
+    else d.digits += number[i], point += !after_point;
+  }
+  if (i < number.size()) point += std::stol(number.substr(i + 1));  // JSON exponents are short digits
+  const std::size_t first = d.digits.find_first_not_of('0');
+  if (first == std::string::npos) return Decimal{};  // zero, whatever its sign
+  d.digits = d.digits.substr(first, d.digits.find_last_not_of('0') - first + 1);
+  d.exponent = point - static_cast<long>(first);
+  return d;
+}
+
+// Reads the text as events and keeps the first number whose value as held differs from the text.
+class InexactNumberFinder : public nlohmann::json_sax<json> {
+ public:
+  std::string found;
+
+  bool number_float(number_float_t value, const string_t& text) override {
+    if (found.empty() && !(decimal_of(json(value).dump()) == decimal_of(text))) found = pointer() + ": " + text;
+    return value_read();
+  }
+  bool null() override { return value_read(); }
+  bool boolean(bool) override { return value_read(); }
+  bool number_integer(number_integer_t) override { return value_read(); }
+  bool number_unsigned(number_unsigned_t) override { return value_read(); }
+  bool string(string_t&) override { return value_read(); }
+  bool binary(binary_t&) override { return value_read(); }
+  bool start_object(std::size_t) override { return open(false); }
+  bool key(string_t& name) override {
+    stack_.back().key = name;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+ private:
+  bool value_read() {
+    if (!stack_.empty() && stack_.back().is_array) ++stack_.back().index;
+    return found.empty();  // stop at the first
+  }
+  bool open(bool is_array) {
+    stack_.push_back({is_array, 0, "", {}});
+    return true;
+  }
+  bool close() {
+    stack_.pop_back();
+    return value_read();
+  }
+  std::string pointer() const {
+    std::string p;
+    for (const auto& c : stack_) p += "/" + (c.is_array ? std::to_string(c.index) : escape_pointer_token(c.key));
+    return p.empty() ? "/" : p;
+  }
+  std::vector<OpenContainer> stack_;
+};
+
+}  // namespace
+
+std::string first_inexact_number(const std::string& text) {
+  InexactNumberFinder finder;
+  try {
+    json::sax_parse(text, &finder);
+  } catch (const json::exception&) {
+  }
+  return finder.found;
+}
+
 FieldReader::FieldReader(const json& object, std::string file, std::string pointer)
     : object_(&object), file_(std::move(file)), pointer_(std::move(pointer)) {
   if (!object.is_object())

@@ -70,6 +70,11 @@ inline constexpr int kMaxJsonDepth = 64;
 // the last), a NUL byte (it stops reading there), nesting deeper than kMaxJsonDepth (messages
 // and copies recurse), numbers beyond the double range.
 nlohmann::json parse_json_strictly(const std::string& text, const std::string& label);
+// The first number of the JSON `text` that the JSON library holds inexactly and so would write
+// back changed (an integer beyond 64 bits, more significant digits than a double keeps), as
+// "POINTER: NUMBER"; empty if none, or if `text` is not JSON. For files vascsim edits and writes
+// back (bookmarks): what another tool keeps there must come back as it was written.
+std::string first_inexact_number(const std::string& text);
 // Formats a bound as the user would write it (0.1, 200, 1e+06).
 std::string format_number(double value);
 
