@@ -10,6 +10,7 @@
 #include "render/palette.h"
 #include "render/png_writer.h"
 #include "sim/io/output_file.h"
+#include "sim/io/run_files.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -234,8 +235,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir)) throw InputError(dir + ": cannot create the plots directory");
   // Refuse before drawing anything, so a refusal leaves the directory as it was.
-  for (const char* name : {"tip_trajectory.png", "actuation_force.png", "snapshots.png", "tracking_error.png",
-                           "contact_force.png"})
+  for (const char* name : kRunPlotFiles)
     check_replaceable_output((fs::path(dir) / name).string(), force, source.run_files());
   const Series s = collect(source);
   const LogMetadata& m = source.metadata();

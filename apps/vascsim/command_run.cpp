@@ -13,6 +13,7 @@
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
 #include "sim/io/output_file.h"
+#include "sim/io/run_files.h"
 #include "sim/io/run_log.h"
 #include "sim/io/run_summary.h"
 #include "sim/io/scene_reader.h"
@@ -83,8 +84,7 @@ class Progress {
 void remove_run_outputs(const std::string& dir) {
   std::error_code ec;
   for (const char* name : {"summary.json", "frames.vlog", "video.mp4", "video.webm"}) fs::remove(fs::path(dir) / name, ec);
-  for (const char* name : {"tip_trajectory.png", "actuation_force.png", "snapshots.png", "tracking_error.png",
-                           "contact_force.png"})
+  for (const char* name : kRunPlotFiles)
     fs::remove(fs::path(dir) / "plots" / name, ec);
   std::vector<std::string> kept;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {

@@ -1,0 +1,11 @@
+// The names of the plots a run directory holds (DIR/plots/), in one place for the renderer that
+// draws them (render/plots.h) and for `vascsim run --force`, which removes an earlier run's
+// outputs without linking the renderer (sim/ never depends on render/).
+#pragma once
+
+namespace vascsim {
+
+inline constexpr const char* kRunPlotFiles[] = {"tip_trajectory.png", "actuation_force.png", "snapshots.png",
+                                                "tracking_error.png", "contact_force.png"};
+
+}  // namespace vascsim
