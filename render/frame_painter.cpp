@@ -171,16 +171,18 @@ FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const 
   const bool hud = view.layers.has(Layer::kHud), legend = view.layers.has(Layer::kLegend);
   font_px_ = std::max(9, static_cast<int>(std::lround(h / 36.0)));
   map_x0_ = 0;
+  // The panel needs about 15 characters of width whatever the frame size. A frame too small for
+  // it beside a map of 30 % of the width (a thumbnail) gets the card and band of narrow frames
+  // instead: a panel squeezed to nothing drew its values over the map without their labels.
+  map_x1_ = static_cast<float>(side_panel_ ? std::round(w - std::max(0.28 * w, 15.0 * font_px_)) : w);
+  if (map_x1_ - map_x0_ < 0.3 * w) side_panel_ = false, map_x1_ = static_cast<float>(w);
   // Without a side panel the HUD card takes a band across the top: the map starts below it, so
   // the card never hides a wall or the rod.
   // Likewise the legend (arrow scales, scale bar) takes a band across the bottom.
   map_y0_ = hud && !side_panel_ ? card_bottom() + 0.4f * static_cast<float>(font_px_) : 0.0f;
   map_y1_ = static_cast<float>(legend && !side_panel_ ? h - band_height() : h);
-  // The panel needs about 15 characters of width whatever the frame size.
-  map_x1_ = static_cast<float>(side_panel_ ? std::round(w - std::max(0.28 * w, 15.0 * font_px_)) : w);
-  // In a frame too small for the panel or the bands beside the map (a thumbnail), the map takes
-  // the whole frame under them rather than a sliver, or none: a negative width flipped the map.
-  if (map_x1_ - map_x0_ < 0.3 * w) map_x1_ = static_cast<float>(w);
+  // In a frame too small for the bands beside the map, the map takes the whole frame under them
+  // rather than a sliver, or none: a negative height flipped the map.
   if (map_y1_ - map_y0_ < 0.3 * h) map_y0_ = 0.0f, map_y1_ = static_cast<float>(h);
   const Vec2 size = world_.max - world_.min;
   scale_ = 0.94 * std::min((map_x1_ - map_x0_) / size.x(), (map_y1_ - map_y0_) / size.y()) * view.zoom;
@@ -398,7 +400,13 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   const float lx = x0 + pad, rx = x1 - pad;
   float y = y0 + pad + fs;
   char buf[64];
+  panel_items_.clear();
+  // A line of text at baseline `baseline` reaches from one font size above it to a third below.
+  const auto record = [&](const char* what, float first_baseline, float last_baseline) {
+    panel_items_.push_back({what, lx, rx, first_baseline - fs, last_baseline + 0.35f * fs});
+  };
   if (hud) {
+    const float hud_top = y;
     if (!meta_.title.empty()) {
       c.text(meta_.title, {lx, y}, static_cast<int>(std::lround(1.1 * fs)), kInk);
       y += 1.3f * row;
@@ -415,6 +423,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     field("Magnetic force",
           f.actuation.empty() ? std::string("n/a") : format_value(f.actuation_total().norm(), scales_.unit, 2));
     field("Max contact", f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
+    record("hud", hud_top, y - row);
   }
   if (!side_panel_ || !legend) return;
 
@@ -424,50 +433,67 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     c.box({lx, y - fs}, {rx, y - fs + 1.0f}, kPanelEdge);
     y += 0.4f * row;
   }
+  // The scale bar sits at the bottom (its ends reach 8 px above its line); the entries above it
+  // in order of need: the force arrows (their lengths are read against them), then the symbols.
+  // In a short frame the entries that would reach the scale bar are left out, not drawn over it.
+  const float by = H - pad - 1.6f * fs, bar_top = by - 8.0f;
+  const auto fits = [&](int rows) { return y + (rows - 1) * row + 0.35f * fs <= bar_top - 0.3f * fs; };
   const float sym_end = lx + 2.2f * fs, text_x = lx + 2.8f * fs, mid = -0.35f * fs;
   auto entry = [&](const std::string& label) {
     c.text(label, {text_x, y}, small, kInk);
+    record("legend", y, y);
     y += row;
   };
   auto arrow_entry = [&](double px_per_newton, double reference, Rgba colour, float width, const char* what) {
-    if (px_per_newton <= 0) return;
+    if (px_per_newton <= 0 || !fits(2)) return;
     c.text(what, {lx, y}, small, kInk);
+    record("legend", y, y + row);
     y += row;
     legend_arrow(c, {lx, y + mid}, y, rx - lx, 0.6f * fs, px_per_newton, reference, scales_.unit, colour, width, small);
     y += row;
   };
-  arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, actuation_arrow_width(H),
-              "Magnetic force");
-  arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, contact_arrow_width(H), "Contact force");
-  if (view_.layers.has(Layer::kFriction) && !f.friction.empty())
-    arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kFriction, contact_arrow_width(H),
-                "Friction force");
-  if (view_.layers.has(Layer::kDrag) && !f.drag.empty())
-    arrow_entry(scales_.drag_px_per_newton, scales_.drag_reference, kDrag, contact_arrow_width(H), "Drag force");
-  const float r = std::max(0.5f * float(view_.min_rod_width_px), static_cast<float>(meta_.rod_outer_radius * scale_));
-  c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kRodEdge);
-  c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kRod);
-  std::snprintf(buf, sizeof buf, "catheter \xC3\x98 %.2f mm", 2e3 * meta_.rod_outer_radius);
-  entry(buf);
-  if (overlay_shown_) {
-    c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kOverlayEdge);
-    c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kOverlayRod);
-    entry("compared run's catheter");
-  }
-  c.dashed_polyline({{lx, y + mid}, {sym_end, y + mid}}, std::max(1.5f, H / 400.0f), 6.0f, 4.0f, kPath);
-  entry("reference path");
-  c.capsule({lx, y + mid}, {sym_end, y + mid}, 0.5f * std::max(2.0f, H / 300.0f), kTrail);
-  entry("tip trail");
-  const float mk = std::min(0.45f * fs, std::max(4.0f, H / 90.0f));
-  c.disc({lx + mk, y + mid}, mk, kStart);
-  c.disc({lx + mk, y + mid}, 0.4f * mk, hex(0xFFFFFF));
-  c.ring({sym_end - mk, y + mid}, mk, 0.45f * mk, kGoal);
-  c.disc({sym_end - mk, y + mid}, 0.3f * mk, kGoal);
-  entry("start, goal");
+  const auto symbols = [&] {
+    arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, actuation_arrow_width(H),
+                "Magnetic force");
+    arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, contact_arrow_width(H), "Contact force");
+    if (view_.layers.has(Layer::kFriction) && !f.friction.empty())
+      arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kFriction, contact_arrow_width(H),
+                  "Friction force");
+    if (view_.layers.has(Layer::kDrag) && !f.drag.empty())
+      arrow_entry(scales_.drag_px_per_newton, scales_.drag_reference, kDrag, contact_arrow_width(H), "Drag force");
+    if (!fits(1)) return;
+    const float r = std::max(0.5f * float(view_.min_rod_width_px), static_cast<float>(meta_.rod_outer_radius * scale_));
+    c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kRodEdge);
+    c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kRod);
+    std::snprintf(buf, sizeof buf, "catheter \xC3\x98 %.2f mm", 2e3 * meta_.rod_outer_radius);
+    entry(buf);
+    if (overlay_shown_) {
+      if (!fits(1)) return;
+      c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kOverlayEdge);
+      c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kOverlayRod);
+      entry("compared run's catheter");
+    }
+    if (!fits(1)) return;
+    c.dashed_polyline({{lx, y + mid}, {sym_end, y + mid}}, std::max(1.5f, H / 400.0f), 6.0f, 4.0f, kPath);
+    entry("reference path");
+    if (!fits(1)) return;
+    c.capsule({lx, y + mid}, {sym_end, y + mid}, 0.5f * std::max(2.0f, H / 300.0f), kTrail);
+    entry("tip trail");
+    if (!fits(1)) return;
+    const float mk = std::min(0.45f * fs, std::max(4.0f, H / 90.0f));
+    c.disc({lx + mk, y + mid}, mk, kStart);
+    c.disc({lx + mk, y + mid}, 0.4f * mk, hex(0xFFFFFF));
+    c.ring({sym_end - mk, y + mid}, mk, 0.45f * mk, kGoal);
+    c.disc({sym_end - mk, y + mid}, 0.3f * mk, kGoal);
+    entry("start, goal");
+  };
+  symbols();
 
-  // Scale bar at the bottom: a round length about half the panel wide.
-  const float by = H - pad - 1.6f * fs;
+  // Scale bar at the bottom: a round length about half the panel wide; left out where the HUD
+  // itself reaches down to it (a frame a few text lines high).
+  if (!panel_items_.empty() && panel_items_.back().bottom > bar_top - 0.3f * fs) return;
   scale_bar(c, {lx, by}, 0.6 * (rx - lx), scale_, by + 1.4f * fs, false, small);
+  panel_items_.push_back({"scale bar", lx, rx, bar_top, by + 1.75f * fs});
 }
 
 }  // namespace vascsim::render

@@ -67,6 +67,14 @@ class FramePainter {
   glm::dvec2 to_pixel(const FrameState& frame, Vec2 world) const;
   ViewTransform transform(const FrameState& frame) const;
   double pixels_per_metre() const { return scale_; }
+  // What the panel (or the HUD card of a narrow frame) drew on the last frame, top to bottom,
+  // with the box it was laid out in (px): the HUD, each legend entry, the scale bar. Entries
+  // that do not fit a short frame are left out; tests check that none overlaps another.
+  struct PanelItem {
+    const char* what;
+    float left, right, top, bottom;
+  };
+  const std::vector<PanelItem>& panel_items() const { return panel_items_; }
 
  private:
   glm::dmat3 camera(const FrameState& frame) const;
@@ -94,6 +102,7 @@ class FramePainter {
   double scale_ = 1;              // px per m
   int font_px_;
   std::vector<glm::vec2> scratch_;
+  std::vector<PanelItem> panel_items_;
   bool lumen_is_box_ = false;              // meta_.lumen is one axis-aligned rectangle, lumen_box_
   Box2 lumen_box_;                         // m
   std::vector<Triangle> lumen_triangles_;  // m, meta_.lumen's interior unless lumen_is_box_

@@ -1,0 +1,70 @@
+// The frame's panel at any size: the HUD, the legend entries and the scale bar never overlap
+// one another and stay inside the frame (a 320 x 180 thumbnail drew "start, goal" over the
+// scale bar; a 160 x 120 one drew the HUD's values over the map without their labels). What
+// does not fit is left out, the force arrows last among the legend entries.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "render/canvas.h"
+#include "render/frame_painter.h"
+#include "render/frame_source.h"
+#include "render_test_util.h"
+
+namespace vascsim::render {
+namespace {
+
+using testing::ScratchDir;
+
+std::vector<FramePainter::PanelItem> panel_at(const std::string& run, int width, int height) {
+  FrameSource source(run);
+  View view;
+  view.width = width;
+  view.height = height;
+  FrameState state;
+  source.frame(source.frame_count() - 1, state);
+  FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state);
+  Canvas canvas(width, height);
+  painter.paint(canvas, state, {});
+  return painter.panel_items();
+}
+
+std::size_t count(const std::vector<FramePainter::PanelItem>& items, const std::string& what) {
+  std::size_t n = 0;
+  for (const auto& item : items) n += what == item.what;
+  return n;
+}
+
+TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
+  ScratchDir dir("panel_layout");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  const std::vector<std::pair<int, int>> sizes = {{1280, 720}, {640, 360}, {480, 270}, {320, 180}, {320, 240},
+                                                  {640, 120}, {1200, 100}, {160, 120}, {240, 320}, {120, 90}};
+  for (const auto& [w, h] : sizes) {
+    const auto items = panel_at(run, w, h);
+    const std::string size = std::to_string(w) + " x " + std::to_string(h);
+    ASSERT_FALSE(items.empty()) << size;
+    EXPECT_STREQ(items.front().what, "hud") << size;
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      EXPECT_GE(items[k].top, 0.0f) << size << ": " << items[k].what;
+      EXPECT_LE(items[k].bottom, static_cast<float>(h)) << size << ": " << items[k].what;
+      EXPECT_GE(items[k].left, 0.0f) << size << ": " << items[k].what;
+      EXPECT_LE(items[k].right, static_cast<float>(w)) << size << ": " << items[k].what;
+      EXPECT_LT(items[k].left, items[k].right) << size << ": " << items[k].what;
+      if (k > 0) EXPECT_LE(items[k - 1].bottom, items[k].top) << size << ": " << items[k - 1].what << " over " << items[k].what;
+    }
+  }
+  // A frame with room shows the whole legend (two force arrows and four symbols) and the scale bar.
+  const auto full = panel_at(run, 1280, 720);
+  EXPECT_EQ(count(full, "legend"), 6u);
+  EXPECT_EQ(count(full, "scale bar"), 1u);
+  // A thumbnail keeps the arrows and the scale bar and leaves symbols out.
+  const auto thumbnail = panel_at(run, 320, 180);
+  EXPECT_GE(count(thumbnail, "legend"), 2u);
+  EXPECT_LT(count(thumbnail, "legend"), 6u);
+  EXPECT_EQ(count(thumbnail, "scale bar"), 1u);
+}
+
+}  // namespace
+}  // namespace vascsim::render
