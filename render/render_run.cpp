@@ -86,23 +86,20 @@ RenderReport render_still(const FrameSource& source, const FrameSource* overlay,
 
 namespace {
 
-bool has_png_frames(const fs::path& dir) {
+// A render's own frames: regular files named as png_frame_path names them (frame_ and at least
+// six digits). A user's frame_final.png, a link or a directory of such a name is not one, and
+// --force never removes it.
+std::vector<fs::path> rendered_frames(const fs::path& dir) {
   std::error_code ec;
+  std::vector<fs::path> frames;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
-    if (name.rfind("frame_", 0) == 0 && it->path().extension() == ".png") return true;
+    if (name.size() < 16 || name.rfind("frame_", 0) != 0 || name.substr(name.size() - 4) != ".png") continue;
+    const std::string digits = name.substr(6, name.size() - 10);
+    if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (fs::symlink_status(it->path(), ec).type() == fs::file_type::regular) frames.push_back(it->path());
   }
-  return false;
-}
-
-void remove_png_frames(const fs::path& dir) {
-  std::error_code ec;
-  std::vector<fs::path> doomed;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name.rfind("frame_", 0) == 0 && it->path().extension() == ".png") doomed.push_back(it->path());
-  }
-  for (const auto& p : doomed) fs::remove(p, ec);
+  return frames;
 }
 
 // Creates `dir` if needed and proves it writable with a probe file, so a bad destination fails
@@ -156,16 +153,19 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   const double t1 = std::clamp(o.to.value_or(source.last_time()), source.first_time(), source.last_time());
   if (t1 < t0) throw InputError("time range [" + io::format_number(t0) + ", " + io::format_number(t1) + "] s is empty");
 
-  // Refuse to overwrite before doing any work.
+  // Refuse before doing any work or removing anything: too many frames, an output in the way.
+  const double frames = std::floor((t1 - t0) * o.fps / o.speed + 1e-9) + 1;
+  if ((!o.mp4_path.empty() || !o.png_dir.empty()) && frames > kMaxVideoFrames)
+    throw InputError("the time range " + io::format_number(t0) + " .. " + io::format_number(t1) + " s at " + std::to_string(o.fps) +
+                     " fps and speed " + io::format_number(o.speed) + " makes " + io::format_number(frames) +
+                     " frames, more than " + io::format_number(kMaxVideoFrames) + ": choose a shorter --from/--to or a higher --speed");
   if (!o.mp4_path.empty()) check_replaceable_output(o.mp4_path, o.force, inputs);
   // What a killed render left here under temporary names goes first (sim/io/output_file.h).
   if (!o.mp4_path.empty()) remove_stale_temporaries(fs::path(o.mp4_path).parent_path().string());
   if (!o.png_dir.empty()) {
-    if (has_png_frames(o.png_dir) && !o.force)
+    if (!rendered_frames(o.png_dir).empty() && !o.force)
       throw InputError(o.png_dir + ": already holds frame_*.png files (use --force to overwrite)");
     prepare_directory(o.png_dir, "PNG");
-    remove_png_frames(o.png_dir);
-    remove_stale_temporaries(o.png_dir);
   }
   RenderReport report;
   if (!o.plots_dir.empty()) {
@@ -173,13 +173,14 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
     remove_stale_temporaries(o.plots_dir);
     report.plots = write_plots(source, o.plots_dir, o.force);
   }
+  // An earlier render's frames go only once everything else has been checked (a refused
+  // --plots removed them and wrote nothing).
+  if (!o.png_dir.empty()) {
+    std::error_code ec;
+    for (const auto& frame : rendered_frames(o.png_dir)) fs::remove(frame, ec);
+    remove_stale_temporaries(o.png_dir);
+  }
   if (o.mp4_path.empty() && o.png_dir.empty()) return report;
-
-  const double frames = std::floor((t1 - t0) * o.fps / o.speed + 1e-9) + 1;
-  if (frames > kMaxVideoFrames)
-    throw InputError("the time range " + io::format_number(t0) + " .. " + io::format_number(t1) + " s at " + std::to_string(o.fps) +
-                     " fps and speed " + io::format_number(o.speed) + " makes " + io::format_number(frames) +
-                     " frames, more than " + io::format_number(kMaxVideoFrames) + ": choose a shorter --from/--to or a higher --speed");
   const auto count = static_cast<std::size_t>(frames);
   const View& view = o.view;
   std::unique_ptr<VideoEncoder> video;

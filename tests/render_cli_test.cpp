@@ -60,6 +60,36 @@ TEST(RenderCli, DefaultOutputIsVideoInRunDirAndNeedsForceToOverwrite) {
   EXPECT_EQ(run_vascsim("render '" + run + "'" + kSmall + "--force", dir).exit_code, 0);
 }
 
+// --force replaces a render's own frames only, and only once the whole command has been checked
+// (QA, stop 38: a refused --plots, or too many frames, had removed them and written nothing;
+// frame_final.png, a link and a directory named frame_*.png were removed too).
+TEST(RenderCli, ForceRemovesOnlyItsOwnFramesAndOnlyOnceTheCommandIsChecked) {
+  ScratchDir dir("cli_png_force");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  const std::string png = dir / "png";
+  const auto write = [](const std::string& path) { std::ofstream(path) << "mine"; };
+  ASSERT_EQ(run_vascsim("render '" + run + "'" + kSmall + "--png-dir '" + png + "'", dir).exit_code, 0);
+  ASSERT_TRUE(fs::exists(png_frame_path(png, 5)));
+  write(dir / "plots_file");
+  const auto refused = run_vascsim("render '" + run + "'" + kSmall + "--png-dir '" + png + "' --force --plots '" + (dir / "plots_file") + "'", dir);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_TRUE(fs::exists(png_frame_path(png, 5))) << "a refused render removed the earlier frames";
+  const auto too_many = run_vascsim("render '" + run + "'" + kSmall + "--png-dir '" + png + "' --force --plots '" + (dir / "plots") + "' --speed 1e-9", dir);
+  EXPECT_EQ(too_many.exit_code, 2) << too_many.err;
+  EXPECT_TRUE(fs::exists(png_frame_path(png, 5)));
+  EXPECT_FALSE(fs::exists(dir / "plots")) << "plots were written before the frame count was refused";
+
+  write(png + "/frame_final.png");
+  fs::create_directory(png + "/frame_000100.png");
+  fs::create_symlink(dir / "plots_file", png + "/frame_000101.png");
+  ASSERT_EQ(run_vascsim("render '" + run + "'" + kSmall + "--png-dir '" + png + "' --force --to 0.4", dir).exit_code, 0);
+  EXPECT_TRUE(fs::exists(png_frame_path(png, 2)));
+  EXPECT_FALSE(fs::exists(png_frame_path(png, 3))) << "an earlier render's frame beyond this one's was kept";
+  EXPECT_TRUE(fs::is_regular_file(png + "/frame_final.png"));
+  EXPECT_TRUE(fs::is_directory(png + "/frame_000100.png"));
+  EXPECT_TRUE(fs::is_symlink(png + "/frame_000101.png"));
+}
+
 TEST(RenderCli, MissingAndTruncatedLogsExit2WithoutOutput) {
   ScratchDir dir("cli_badlog");
   auto r = run_vascsim("render '" + (dir / "nope") + "' --mp4 '" + (dir / "out/v.mp4") + "'", dir);
