@@ -452,6 +452,8 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     legend_arrow(c, {lx, y + mid}, y, rx - lx, 0.6f * fs, px_per_newton, reference, scales_.unit, colour, width, small);
     y += row;
   };
+  // A lambda so that the first entry that does not fit ends the list (those below need less room
+  // only by accident, and a gap in the order reads as a missing symbol).
   const auto symbols = [&] {
     arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, actuation_arrow_width(H),
                 "Magnetic force");
