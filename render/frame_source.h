@@ -48,6 +48,9 @@ class FrameSource {
   // output never replaces, even with --force.
   std::vector<std::string> run_files() const;
   const LogMetadata& metadata() const { return metadata_; }
+  // What a user should know about the log's run on opening it: a run without summary.json
+  // (stopped or still writing), or a summary the log could not be checked against.
+  const std::vector<std::string>& warnings() const { return warnings_; }
   std::size_t frame_count() const { return frame_count_; }
   double first_time() const { return first_time_; }
   double last_time() const { return last_time_; }
@@ -97,6 +100,7 @@ class FrameSource {
   std::string log_path_;
   FrameLogReader reader_;
   LogMetadata metadata_;
+  std::vector<std::string> warnings_;
   std::size_t frame_count_ = 0;
   double first_time_ = 0, last_time_ = 0;
   int position_ = -1, actuation_ = -1, contact_ = -1, friction_ = -1, drag_ = -1, reference_ = -1, tip_error_ = -1;

@@ -142,11 +142,15 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
     const std::vector<std::string> overlay_files = overlay->run_files();
     inputs.insert(inputs.end(), overlay_files.begin(), overlay_files.end());
   }
+  if (o.warn)
+    for (const FrameSource* run : {&source, overlay.get()})
+      if (run)
+        for (const std::string& warning : run->warnings()) o.warn(warning);
   if (o.still) return render_still(source, overlay.get(), inputs, o);
   if (o.mp4_path.empty() && o.png_dir.empty() && o.plots_dir.empty()) {
-    std::error_code ec;
-    o.mp4_path = fs::is_directory(run_dir, ec) ? (fs::path(run_dir) / "video.mp4").string()
-                                               : fs::path(run_dir).replace_extension(".mp4").string();
+    // A run directory's log named directly renders to the run's video, as its directory does.
+    const std::string dir = run_dir_of(run_dir);
+    o.mp4_path = !dir.empty() ? (fs::path(dir) / "video.mp4").string() : fs::path(run_dir).replace_extension(".mp4").string();
     validate_render_options(o);
   }
   const double t0 = std::clamp(o.from.value_or(source.first_time()), source.first_time(), source.last_time());

@@ -32,6 +32,8 @@ struct RenderOptions {
   // Called after each video or PNG frame with (frames done, frames in all); returning false
   // cancels the render (an InputError, and no output appears).
   std::function<bool(std::size_t, std::size_t)> progress;
+  // Called with each warning about the runs read (FrameSource::warnings), before any output.
+  std::function<void(const std::string&)> warn;
 };
 
 struct RenderReport {

@@ -1,11 +1,15 @@
 // Frame log round trip, seeking, and recovery of a log whose writer was killed mid-record.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <iterator>
 #include <filesystem>
 #include <fstream>
+#include <future>
 
 #include "sim/log/frame_log.h"
 #include "sim/scene/input_error.h"
@@ -109,6 +113,37 @@ TEST(FrameLog, RejectsMissingAndForeignFiles) {
   { std::ofstream f(path, std::ios::binary); f.write("VSIMLOG\0\1\0\0\0", 12); }
   EXPECT_THROW(FrameLogReader{path}, InputError);  // truncated header
   std::remove(path.c_str());
+}
+
+// A pipe named like a log hung `export` and `render` (fopen waits for a writer) and a directory
+// was reported as a "truncated frame log header": both are refused up front, naming what they are.
+TEST(FrameLog, RefusesPipesAndDirectoriesWithoutWaiting) {
+  const std::string dir = temp_path("not_a_log");
+  std::filesystem::create_directories(dir);
+  try {
+    FrameLogReader r(dir);
+    FAIL() << "accepted a directory";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), dir + ": is a directory, not a frame log");
+  }
+  const std::string fifo = dir + "/frames.vlog";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  auto opened = std::async(std::launch::async, [&]() -> std::string {
+    try {
+      FrameLogReader r(fifo);
+      return "accepted a pipe";
+    } catch (const InputError& e) {
+      return e.what();
+    }
+  });
+  if (opened.wait_for(std::chrono::seconds(10)) != std::future_status::ready) {
+    // Unblock the reader so the test ends and reports instead of hanging.
+    std::FILE* writer = std::fopen(fifo.c_str(), "wb");
+    if (writer) std::fclose(writer);
+    ADD_FAILURE() << "the reader waited on a pipe";
+  }
+  EXPECT_EQ(opened.get(), fifo + ": not a regular file (a frame log is read from a file, not a device or a pipe)");
+  std::filesystem::remove_all(dir);
 }
 
 // Metadata is bounded (kMaxMetadataBytes, 32 MB): the writer refuses to make a log its readers

@@ -141,6 +141,70 @@ TEST(RenderCli, ALogWithOtherFramesThanItsSummaryIsRefused) {
   EXPECT_EQ(run_vascsim("render '" + run + "'" + still + " --force", dir).exit_code, 0);
 }
 
+// The run's log named directly (RUN/frames.vlog) is the run's, as its directory is: it was
+// rendered and exported without the check against summary.json or the stopped-run warning, and
+// its default video went to RUN/frames.mp4 beside the run's video.mp4.
+TEST(RenderCli, ARunsLogNamedDirectlyIsCheckedAndRenderedAsItsRun) {
+  ScratchDir dir("cli_log_named_directly");
+  SyntheticLogSpec spec;
+  spec.frames = 10;
+  const std::string run = testing::make_run(dir, spec);
+  const std::string log = run + "/frames.vlog";
+  const std::string still = " --still 0.5 --width 64 --height 64 --png '" + (dir / "still.png") + "' --force";
+  fs::remove(run + "/summary.json");
+  fs::create_directories(dir / "csv");
+  testing::CommandResult r = run_vascsim("render '" + log + "'" + still, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: " + run + " has no summary.json"), std::string::npos) << r.err;
+  r = run_vascsim("export '" + log + "' --csv '" + (dir / "csv") + "' --force", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: " + run + " has no summary.json"), std::string::npos) << r.err;
+  testing::write_bytes(run + "/summary.json", R"({"format": "vascsim-summary/1", "ok": true, "frames": 9})");
+  r = run_vascsim("render '" + log + "'" + still, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(log + ": 10 frames, but " + run + "/summary.json says the run wrote 9"), std::string::npos) << r.err;
+  r = run_vascsim("export '" + log + "' --csv '" + (dir / "csv") + "' --force", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("says the run wrote 9"), std::string::npos) << r.err;
+  testing::write_bytes(run + "/summary.json", R"({"format": "vascsim-summary/1", "ok": true, "frames": 10})");
+  r = run_vascsim("render '" + log + "'" + kSmall, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(run + "/video.mp4"));
+  EXPECT_FALSE(fs::exists(run + "/frames.mp4"));
+  // A log copied out of its run is no run's: nothing to check it against, nothing to warn about.
+  fs::create_directories(dir / "copies");
+  fs::copy_file(log, dir / "copies/run1.vlog");
+  r = run_vascsim("render '" + (dir / "copies/run1.vlog") + "'" + still, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
+// A summary that cannot be read, or has no frame count, leaves the log unchecked against it: a
+// warning says so (the check was skipped silently), and the log is still rendered and exported.
+TEST(RenderCli, ASummaryTheLogCannotBeCheckedAgainstIsAWarning) {
+  ScratchDir dir("cli_summary_damaged");
+  SyntheticLogSpec spec;
+  spec.frames = 10;
+  const std::string run = testing::make_run(dir, spec);
+  const std::string still = " --still 0.5 --width 64 --height 64 --png '" + (dir / "still.png") + "' --force";
+  const std::string not_checked = ", so " + run + "/frames.vlog was not checked against it";
+  fs::create_directories(dir / "csv");
+  for (const auto& [summary, why] : std::vector<std::pair<std::string, std::string>>{
+           {R"({"ok": tru)", run + "/summary.json: "},
+           {R"([1, 2])", run + "/summary.json: not a JSON object"},
+           {R"({"ok": true, "frames": "ten"})", run + "/summary.json: no /frames count"}}) {
+    SCOPED_TRACE(summary);
+    testing::write_bytes(run + "/summary.json", summary);
+    testing::CommandResult r = run_vascsim("render '" + run + "'" + still, dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("vascsim render: warning: " + why), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(not_checked), std::string::npos) << r.err;
+    r = run_vascsim("export '" + run + "' --csv '" + (dir / "csv") + "' --force", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("vascsim export: warning: " + why), std::string::npos) << r.err;
+  }
+}
+
 // A summary names the scene its run ran (provenance.scene_hash), as the log does: another run's
 // summary beside a log with as many frames is refused, not shown as this run's numbers.
 TEST(RenderCli, ASummaryOfAnotherSceneIsRefused) {

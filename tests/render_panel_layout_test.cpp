@@ -52,7 +52,9 @@ TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
       EXPECT_GE(items[k].left, 0.0f) << size << ": " << items[k].what;
       EXPECT_LE(items[k].right, static_cast<float>(w)) << size << ": " << items[k].what;
       EXPECT_LT(items[k].left, items[k].right) << size << ": " << items[k].what;
-      if (k > 0) EXPECT_LE(items[k - 1].bottom, items[k].top) << size << ": " << items[k - 1].what << " over " << items[k].what;
+      if (k > 0) {
+        EXPECT_LE(items[k - 1].bottom, items[k].top) << size << ": " << items[k - 1].what << " over " << items[k].what;
+      }
     }
   }
   // A frame with room shows the whole legend (two force arrows and four symbols) and the scale bar.

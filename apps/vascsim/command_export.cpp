@@ -65,10 +65,11 @@ int run_export_command(int argc, char** argv) {
   options.overwrite = args.flag("force");
   const std::string log_path = frame_log_path(args.positional().front());
   const FrameLogReader log(log_path);
-  check_log_matches_summary(args.positional().front(), log.frame_count(),
-                            read_log_metadata(log.header().metadata, log_path).scene_hash);
-  if (const std::string warning = incomplete_run_warning(args.positional().front()); !warning.empty())
-    std::fprintf(stderr, "%s\n", warning.c_str());
+  const std::string& run = args.positional().front();
+  for (const std::string& warning :
+       {incomplete_run_warning(run),
+        check_log_matches_summary(run, log.frame_count(), read_log_metadata(log.header().metadata, log_path).scene_hash)})
+    if (!warning.empty()) std::fprintf(stderr, "vascsim export: %s\n", warning.c_str());
   const auto files = export_csv(log, *dir, options);
   std::printf("wrote %zu CSV file%s to %s\n", files.size(), files.size() == 1 ? "" : "s", dir->c_str());
   return 0;

@@ -12,7 +12,6 @@
 #include "apps/vascsim/commands.h"
 #include "render/render_run.h"
 #include "render/view.h"
-#include "sim/log/frame_log.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::cli {
@@ -124,9 +123,7 @@ int run_render_command(int argc, char** argv) {
   else throw UsageError("--aa: expected analytic or msaa, got '" + aa + "'");
   o.force = args.flag("force");
 
-  for (const std::string& run : {args.positional()[0], o.overlay_run})
-    if (const std::string warning = incomplete_run_warning(run); !warning.empty())
-      std::fprintf(stderr, "vascsim render: %s\n", warning.c_str());
+  o.warn = [](const std::string& warning) { std::fprintf(stderr, "vascsim render: %s\n", warning.c_str()); };
   bool progress_shown = false;
   o.progress = terminal_progress(!args.flag("quiet"), progress_shown);
   const render::RenderReport r = render::render_run(args.positional()[0], o);

@@ -8,6 +8,7 @@
 #include "sim/io/provenance.h"
 #include "sim/io/run_summary_reader.h"
 #include "sim/io/scene_reader.h"
+#include "sim/log/frame_log.h"
 
 namespace vascsim {
 
@@ -96,34 +97,36 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   return j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n";  // a scene file name need not be UTF-8
 }
 
-void check_log_matches_summary(const std::string& run_path, std::size_t log_frames, const std::string& log_scene_hash) {
+std::string check_log_matches_summary(const std::string& run_path, std::size_t log_frames, const std::string& log_scene_hash) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::is_directory(run_path, ec)) return;
-  // A summary that is not the program's (hand-written, or of another version) has no count to
-  // hold the log to; the log's own checks still apply.
+  const std::string run_dir = run_dir_of(run_path);
+  if (run_dir.empty()) return "";
+  const fs::path log_path = fs::path(run_dir) / "frames.vlog", summary_path = fs::path(run_dir) / "summary.json";
+  const std::string not_checked = ", so " + log_path.string() + " was not checked against it (its own checks still apply)";
   std::optional<json> summary;
   try {
-    summary = read_run_summary(run_path);
-  } catch (const InputError&) {
-    return;
+    summary = read_run_summary(run_dir);
+  } catch (const InputError& e) {
+    return std::string("warning: ") + e.what() + not_checked;
   }
-  if (!summary) return;
-  const fs::path log_path = fs::path(run_path) / "frames.vlog", summary_path = fs::path(run_path) / "summary.json";
+  if (!summary) return "";
+  if (!summary->is_object()) return "warning: " + summary_path.string() + ": not a JSON object" + not_checked;
   const json::json_pointer hash_pointer("/provenance/scene_hash");
-  if (summary->is_object() && summary->contains(hash_pointer) && (*summary)[hash_pointer].is_string()) {
+  if (summary->contains(hash_pointer) && (*summary)[hash_pointer].is_string()) {
     const auto summary_hash = (*summary)[hash_pointer].get<std::string>();
     if (!summary_hash.empty() && !log_scene_hash.empty() && summary_hash != log_scene_hash)
       throw InputError(summary_path.string() + ": /provenance/scene_hash is " + summary_hash + ", but " + log_path.string() +
                        " was written by a run of the scene with hash " + log_scene_hash +
                        ": the summary is another run's (run the scene again, or copy the run directory whole)");
   }
-  const json* frames = summary->is_object() && summary->contains("frames") ? &(*summary)["frames"] : nullptr;
-  if (!frames || !frames->is_number_unsigned()) return;
+  const json* frames = summary->contains("frames") ? &(*summary)["frames"] : nullptr;
+  if (!frames || !frames->is_number_unsigned())
+    return "warning: " + summary_path.string() + ": no /frames count (not a summary vascsim wrote)" + not_checked;
   const auto expected = frames->get<std::uint64_t>();
   if (expected != log_frames)
     throw InputError(log_path.string() + ": " + std::to_string(log_frames) + " frames, but " + summary_path.string() +
                      " says the run wrote " + std::to_string(expected) + ": the log was cut or appended to after the run ended (run it again, or copy it again)");
+  return "";
 }
 
 }  // namespace vascsim

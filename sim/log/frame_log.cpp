@@ -158,11 +158,20 @@ void FrameLogWriter::close() {
   if (!ok) throw InputError(path_ + ": cannot close frame log (" + std::strerror(errno) + ")");
 }
 
-std::string incomplete_run_warning(const std::string& run_path) {
+std::string run_dir_of(const std::string& run_path) {
+  namespace fs = std::filesystem;
   std::error_code ec;
-  if (!std::filesystem::is_directory(run_path, ec) || std::filesystem::exists(std::filesystem::path(run_path) / "summary.json", ec))
-    return "";
-  return "warning: " + run_path + " has no summary.json: the run was stopped or is still being written, so its log may end early";
+  if (fs::is_directory(run_path, ec)) return run_path;
+  const fs::path log(run_path);
+  if (log.filename() != "frames.vlog") return "";
+  return log.has_parent_path() ? log.parent_path().string() : ".";
+}
+
+std::string incomplete_run_warning(const std::string& run_path) {
+  const std::string dir = run_dir_of(run_path);
+  std::error_code ec;
+  if (dir.empty() || std::filesystem::exists(std::filesystem::path(dir) / "summary.json", ec)) return "";
+  return "warning: " + dir + " has no summary.json: the run was stopped or is still being written, so its log may end early";
 }
 
 InputError bad_frame_time(const std::string& path, std::size_t i, double t, const char* why) {
@@ -178,6 +187,13 @@ void check_frame_time(const std::string& path, std::size_t i, double t, double p
 }
 
 FrameLogReader::FrameLogReader(const std::string& path) : path_(path) {
+  // Checked before opening: fopen on a FIFO blocks until a writer comes, which hung `export` and
+  // `render` on a pipe named frames.vlog, and a directory only failed later as a "truncated" log.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status)) throw InputError(path + ": is a directory, not a frame log");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(path + ": not a regular file (a frame log is read from a file, not a device or a pipe)");
   file_ = std::fopen(path.c_str(), "rb");
   if (!file_) throw InputError(path + ": cannot open frame log (" + std::strerror(errno) + ")");
   // A refused file is closed here: the destructor does not run for a constructor that throws.

@@ -80,9 +80,13 @@ class FrameLogWriter {
 // The frame log of a run: RUN_DIR/frames.vlog for a directory, the path itself for a file.
 // Throws InputError if neither exists.
 std::string frame_log_path(const std::string& run_path);
+// The run directory a path names: the path itself for a directory, the parent for its log named
+// directly (DIR/frames.vlog), empty for any other file (a log copied out of its run, which no
+// summary describes).
+std::string run_dir_of(const std::string& run_path);
 // For a run directory without summary.json (written last, when a run ends, whether it reached
 // its end or diverged): a warning that the run was stopped or is still being written, so its log
-// may end early. Empty for a finished run and for a log file named directly.
+// may end early. Empty for a finished run and for a log that is not a run directory's.
 std::string incomplete_run_warning(const std::string& run_path);
 
 // The one rule for a frame's time (docs/frame-log.md, "Checked times"): finite, >= 0 and not
