@@ -16,11 +16,45 @@
 #include "render/view_frame.h"
 #include "sim/io/json_fields.h"
 #include "sim/io/output_file.h"
+#include "sim/io/run_files.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// frame_NNNNNN.png (six or more digits): the names png_frame_path gives --png-dir's frames.
+bool is_rendered_frame_name(const std::string& name) {
+  if (name.size() < 16 || name.rfind("frame_", 0) != 0 || name.substr(name.size() - 4) != ".png") return false;
+  return name.substr(6, name.size() - 10).find_first_not_of("0123456789") == std::string::npos;
+}
+
+// Two outputs of one command never share a file: a video named as one of the frames or plots
+// was written over by them halfway (or they by it), with the encoder's noise as the only error.
+void check_outputs_apart(const RenderOptions& o) {
+  if (o.mp4_path.empty()) return;
+  std::error_code ec;
+  const auto resolved = [&ec](const std::string& p) {
+    const fs::path r = fs::weakly_canonical(fs::absolute(p, ec), ec);
+    return r.has_filename() ? r : r.parent_path();  // "out/" is "out"
+  };
+  const fs::path video = resolved(o.mp4_path);
+  const std::string name = video.filename().string();
+  for (const auto& [dir, option] : {std::pair{o.png_dir, "--png-dir"}, std::pair{o.plots_dir, "--plots"}}) {
+    if (dir.empty()) continue;
+    if (resolved(dir) == video)
+      throw InputError("--mp4 " + o.mp4_path + " is the directory " + option + " writes to: name the video otherwise");
+    if (resolved(dir) != video.parent_path()) continue;
+    const bool plot = std::string(option) == "--plots" &&
+                      std::find(std::begin(kRunPlotFiles), std::end(kRunPlotFiles), name) != std::end(kRunPlotFiles);
+    if (plot || (std::string(option) == "--png-dir" && is_rendered_frame_name(name)))
+      throw InputError("--mp4 " + o.mp4_path + " is one of the files " + option + " " + dir + " writes: name the video otherwise");
+  }
+}
+
+}  // namespace
 
 void validate_render_options(const RenderOptions& o) {
   const auto& v = o.view;
@@ -41,6 +75,7 @@ void validate_render_options(const RenderOptions& o) {
   if (!o.still && !o.png_path.empty()) throw InputError("--png FILE needs --still T (for a sequence use --png-dir)");
   if (!o.overlay_run.empty() && !o.still && o.mp4_path.empty() && o.png_dir.empty())
     throw InputError("--overlay draws over a still (--still T --png FILE) or a video (--mp4, --png-dir), not --plots");
+  check_outputs_apart(o);
 }
 
 namespace {
@@ -93,10 +128,7 @@ std::vector<fs::path> rendered_frames(const fs::path& dir) {
   std::error_code ec;
   std::vector<fs::path> frames;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name.size() < 16 || name.rfind("frame_", 0) != 0 || name.substr(name.size() - 4) != ".png") continue;
-    const std::string digits = name.substr(6, name.size() - 10);
-    if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (!is_rendered_frame_name(it->path().filename().string())) continue;
     if (fs::symlink_status(it->path(), ec).type() == fs::file_type::regular) frames.push_back(it->path());
   }
   return frames;

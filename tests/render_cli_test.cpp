@@ -250,6 +250,32 @@ TEST(RenderCli, UnwritableDestinationExits2WithoutPartialFiles) {
   EXPECT_FALSE(has_final_outputs(dir.path()));
 }
 
+// Outputs of one command that name the same file are refused before anything is written: the
+// video named as a plot or a frame was written over halfway, with only the encoder's noise to say.
+TEST(RenderCli, OutputsNamingTheSameFileAreRefused) {
+  ScratchDir dir("cli_outputs_apart");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  const std::string out = dir / "out";
+  fs::create_directories(out);
+  for (const auto& [outputs, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"--plots '" + out + "' --mp4 '" + out + "/tip_trajectory.png'", "is one of the files --plots " + out + " writes"},
+           {"--png-dir '" + out + "' --mp4 '" + out + "/frame_000003.png'", "is one of the files --png-dir " + out + " writes"},
+           {"--png-dir '" + out + "/' --mp4 '" + dir.path().string() + "/./out/frame_000000.png'", "is one of the files --png-dir"},
+           {"--png-dir '" + out + "' --mp4 '" + out + "'", "is the directory --png-dir writes to"}}) {
+    SCOPED_TRACE(outputs);
+    const auto r = run_vascsim("render '" + run + "'" + kSmall + outputs, dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::is_empty(out));
+  }
+  // Beside each other, in one directory, they are fine.
+  const auto r = run_vascsim("render '" + run + "'" + kSmall + "--png-dir '" + out + "' --plots '" + out + "' --mp4 '" + out + "/video.mp4'", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out + "/video.mp4"));
+  EXPECT_TRUE(fs::exists(out + "/frame_000000.png"));
+  EXPECT_TRUE(fs::exists(out + "/tip_trajectory.png"));
+}
+
 TEST(RenderCli, BadOptionsExit2) {
   ScratchDir dir("cli_options");
   const std::string run = testing::make_run(dir, SyntheticLogSpec{});
