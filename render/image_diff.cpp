@@ -15,7 +15,7 @@ namespace vascsim::render {
 // The strict reading (container checks, stb_image) is sim/io/png_file.h's, shared with the
 // scene reader's vessel masks.
 Image load_png(const std::string& path) {
-  const io::PngPixels p = io::read_png(path, 4);
+  const io::PngPixels p = io::read_png(path, 4, 0, true);
   Image img;
   img.width = p.width;
   img.height = p.height;
@@ -29,10 +29,11 @@ Image load_png(const std::string& path) {
     opaque = opaque && img.alpha[i] == 255;
   }
   if (opaque) img.alpha.clear();
+  img.rgba16 = p.data16;
   return img;
 }
 
-DiffStats diff_images(const Image& a, const Image& b, int tolerance, Image* heat_map) {
+DiffStats diff_images(const Image& a, const Image& b, double tolerance, Image* heat_map) {
   if (a.width != b.width || a.height != b.height)
     throw InputError("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " vs " +
                      std::to_string(b.width) + "x" + std::to_string(b.height));
@@ -45,19 +46,23 @@ DiffStats diff_images(const Image& a, const Image& b, int tolerance, Image* heat
   }
   // Alpha counts as a fourth channel when either image has any pixel not opaque (once it was
   // dropped on reading, and a half-transparent picture compared equal to its opaque original).
-  const int channels = a.alpha.empty() && b.alpha.empty() ? 3 : 4;
-  const auto alpha = [](const Image& i, long p) {
-    return i.alpha.empty() ? 255 : int(i.alpha[static_cast<std::size_t>(p)]);
+  // A 16-bit image counts all four (its alpha is kept whole only there).
+  const int channels = a.alpha.empty() && b.alpha.empty() && a.rgba16.empty() && b.rgba16.empty() ? 3 : 4;
+  // Channel k of pixel p in 8-bit levels (a 16-bit sample as value / 257, exactly 255 at full).
+  const auto sample = [](const Image& i, long p, int k) -> double {
+    const auto at = static_cast<std::size_t>(p);
+    if (!i.rgba16.empty()) return i.rgba16[4 * at + static_cast<std::size_t>(k)] / 257.0;
+    if (k < 3) return i.rgb[3 * at + static_cast<std::size_t>(k)];
+    return i.alpha.empty() ? 255 : i.alpha[at];
   };
   double sum = 0, sum_sq = 0;
   for (long p = 0; p < s.pixels; ++p) {
-    int worst = 0;
+    double worst = 0;
     for (int k = 0; k < channels; ++k) {
-      const int d = k < 3 ? std::abs(int(a.rgb[3 * p + k]) - int(b.rgb[3 * p + k]))
-                          : std::abs(alpha(a, p) - alpha(b, p));
+      const double d = std::abs(sample(a, p, k) - sample(b, p, k));
       worst = std::max(worst, d);
       sum += d;
-      sum_sq += double(d) * d;
+      sum_sq += d * d;
     }
     s.max_difference = std::max(s.max_difference, worst);
     if (worst > tolerance) ++s.pixels_over;

@@ -27,8 +27,8 @@ void put_chunk(std::string& png, const std::string& type, const std::string& dat
 }
 
 std::string png_with_palette(int width, int height, int colour_type, const std::vector<std::uint8_t>& pixels,
-                             const std::vector<std::uint8_t>& palette_rgb) {
-  const int channels = colour_type == 2 ? 3 : colour_type == 4 ? 2 : colour_type == 6 ? 4 : 1;
+                             const std::vector<std::uint8_t>& palette_rgb, int bit_depth = 8) {
+  const int channels = (colour_type == 2 ? 3 : colour_type == 4 ? 2 : colour_type == 6 ? 4 : 1) * (bit_depth / 8);
   std::string raw;  // each row: filter type 0, then its bytes
   for (int y = 0; y < height; ++y) {
     raw.push_back(0);
@@ -55,7 +55,7 @@ std::string png_with_palette(int width, int height, int colour_type, const std::
   std::string ihdr;
   put_u32(ihdr, static_cast<std::uint32_t>(width));
   put_u32(ihdr, static_cast<std::uint32_t>(height));
-  ihdr += std::string{8, static_cast<char>(colour_type), 0, 0, 0};  // depth, colour, deflate, filter, no interlace
+  ihdr += std::string{static_cast<char>(bit_depth), static_cast<char>(colour_type), 0, 0, 0};  // depth, colour, deflate, filter, no interlace
   std::string png = "\x89PNG\r\n\x1a\n";
   put_chunk(png, "IHDR", ihdr);
   if (colour_type == 3) put_chunk(png, "PLTE", std::string(palette_rgb.begin(), palette_rgb.end()));
@@ -68,6 +68,15 @@ std::string png_with_palette(int width, int height, int colour_type, const std::
 
 std::string png_bytes(int width, int height, int colour_type, const std::vector<std::uint8_t>& pixels) {
   return png_with_palette(width, height, colour_type, pixels, {});
+}
+
+std::string png16_bytes(int width, int height, int colour_type, const std::vector<std::uint16_t>& samples) {
+  std::vector<std::uint8_t> big_endian;
+  for (std::uint16_t v : samples) {
+    big_endian.push_back(static_cast<std::uint8_t>(v >> 8));
+    big_endian.push_back(static_cast<std::uint8_t>(v & 0xFF));
+  }
+  return png_with_palette(width, height, colour_type, big_endian, {}, 16);
 }
 
 std::string indexed_png_bytes(int width, int height, const std::vector<std::uint8_t>& indices,

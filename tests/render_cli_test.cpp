@@ -16,6 +16,7 @@
 #define STBI_WRITE_NO_STDIO
 #include <stb/stb_image_write.h>
 #include "render_test_util.h"
+#include "tests/png_bytes_support.h"
 
 namespace vascsim::render {
 namespace {
@@ -377,6 +378,33 @@ TEST(DiffCli, ExitCodesAndHeatMap) {
   r = run_vascsim("diff '" + (dir / "a.png") + "' '" + (dir / "half.png") + "'", dir);
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_NE(r.out.find("max difference  127"), std::string::npos) << r.out;
+}
+
+// 16-bit PNGs (from other tools) are compared whole: read at 8 bits, two images differing in
+// their low bytes only compared as identical. Differences are in 8-bit levels (value / 257).
+TEST(DiffCli, SixteenBitImagesAreComparedAtFullPrecision) {
+  ScratchDir dir("cli_diff16");
+  std::vector<std::uint16_t> a(4 * 2 * 3, 0x8000);
+  std::vector<std::uint16_t> b = a;
+  b[3 * 5 + 1] = 0x8000 + 0x80;  // pixel 5's green: the low byte only, 128/257 of an 8-bit level
+  std::ofstream(dir / "a16.png", std::ios::binary) << vascsim::test::png16_bytes(4, 2, 2, a);
+  std::ofstream(dir / "b16.png", std::ios::binary) << vascsim::test::png16_bytes(4, 2, 2, b);
+  auto r = run_vascsim("diff '" + (dir / "a16.png") + "' '" + (dir / "b16.png") + "'", dir);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("max difference  0.4981\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pixels over 0  1 of 8"), std::string::npos) << r.out;
+  EXPECT_EQ(run_vascsim("diff '" + (dir / "a16.png") + "' '" + (dir / "b16.png") + "' --tolerance 1", dir).exit_code, 0);
+  EXPECT_EQ(run_vascsim("diff '" + (dir / "a16.png") + "' '" + (dir / "a16.png") + "'", dir).exit_code, 0);
+  // Against an 8-bit image of the same colours (0x80 is 0x8080 at 16 bits): 0x8000 is 128/257 off.
+  write_image_png(dir / "c8.png", flat_image(4, 2, 0x80));
+  r = run_vascsim("diff '" + (dir / "a16.png") + "' '" + (dir / "c8.png") + "'", dir);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("pixels over 0  8 of 8"), std::string::npos) << r.out;
+  std::vector<std::uint16_t> same(4 * 2 * 3, 0x8080);
+  std::ofstream(dir / "d16.png", std::ios::binary) << vascsim::test::png16_bytes(4, 2, 2, same);
+  r = run_vascsim("diff '" + (dir / "d16.png") + "' '" + (dir / "c8.png") + "'", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("inf (identical)"), std::string::npos) << r.out;
 }
 
 // --out follows the rules of every other output: no existing file replaced without --force, and

@@ -58,8 +58,11 @@ int run_diff_command(int argc, char** argv) {
   const render::DiffStats s = render::diff_images(a, b, tolerance, out ? &heat : nullptr);
   if (out) render::write_image_png(*out, heat);
   const bool pass = s.pixels_over <= max_pixels;
-  std::printf("max difference  %d\nmean difference %.4f\npixels over %d  %ld of %ld\nPSNR            ",
-              s.max_difference, s.mean_difference, tolerance, s.pixels_over, s.pixels);
+  // Whole levels for 8-bit images, as always; a 16-bit image's differences have fractions.
+  const bool whole = std::floor(s.max_difference) == s.max_difference;
+  std::printf(whole ? "max difference  %.0f\n" : "max difference  %.4f\n", s.max_difference);
+  std::printf("mean difference %.4f\npixels over %d  %ld of %ld\nPSNR            ", s.mean_difference, tolerance,
+              s.pixels_over, s.pixels);
   if (std::isinf(s.psnr_db)) std::printf("inf (identical)\n");
   else std::printf("%.2f dB\n", s.psnr_db);
   std::printf("%s\n", pass ? "within tolerance" : "DIFFERENT");

@@ -155,11 +155,11 @@ std::pair<int, int> png_dimensions(const std::string& path) {
   return {static_cast<int>(w), static_cast<int>(h)};
 }
 
-PngPixels read_png(const std::string& path, int channels, int max_side) {
-  return decode_png(read_png_bytes(path), path, channels, max_side);
+PngPixels read_png(const std::string& path, int channels, int max_side, bool keep_16_bit) {
+  return decode_png(read_png_bytes(path), path, channels, max_side, keep_16_bit);
 }
 
-PngPixels decode_png(const std::string& bytes, const std::string& label, int channels, int max_side) {
+PngPixels decode_png(const std::string& bytes, const std::string& label, int channels, int max_side, bool keep_16_bit) {
   if (bytes.size() > kMaxPngBytes)
     throw InputError(label + ": cannot read PNG (larger than " + std::to_string(kMaxPngBytes >> 20) + " MiB)");
   const PaletteChunk palette = check_png_container(bytes, label);
@@ -186,8 +186,16 @@ PngPixels decode_png(const std::string& bytes, const std::string& label, int cha
   img.width = w;
   img.height = h;
   img.channels = channels;
-  img.data.assign(data, data + static_cast<std::size_t>(w) * h * channels);
+  const std::size_t samples = static_cast<std::size_t>(w) * h * channels;
+  img.data.assign(data, data + samples);
   stbi_image_free(data);
+  if (keep_16_bit && stbi_is_16_bit_from_memory(reinterpret_cast<const stbi_uc*>(decoded.data()), static_cast<int>(decoded.size()))) {
+    stbi_us* wide = stbi_load_16_from_memory(reinterpret_cast<const stbi_uc*>(decoded.data()),
+                                             static_cast<int>(decoded.size()), &w, &h, &comp, channels);
+    if (!wide) throw InputError(decode_failure(label));
+    img.data16.assign(wide, wide + samples);
+    stbi_image_free(wide);
+  }
   return img;
 }
 

@@ -23,6 +23,9 @@ struct PngPixels {
   int width = 0, height = 0;        // px
   int channels = 0;                 // bytes per pixel: 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA
   std::vector<std::uint8_t> data;   // row-major, row 0 at the top, `channels` bytes per pixel
+  // The same samples at full precision (0..65535), for a 16-bit PNG read with keep_16_bit; else
+  // empty. `data` holds each one's high byte.
+  std::vector<std::uint16_t> data16;
 };
 
 // Reads `path` and decodes it to `channels` (1..4) bytes per pixel, converting as stb_image does
@@ -30,10 +33,13 @@ struct PngPixels {
 // wider or taller than max_side px, read from the header before any pixel is decoded. Throws
 // InputError naming the file if it is missing, not a regular file, over kMaxPngBytes, not a
 // well-formed PNG (signature, CRCs, final IEND), too large or not decodable.
-PngPixels read_png(const std::string& path, int channels, int max_side = 0);
+// keep_16_bit: a 16-bit PNG's samples are also kept whole, in data16 (vascsim diff: two images
+// differing in their low bytes only must not compare equal).
+PngPixels read_png(const std::string& path, int channels, int max_side = 0, bool keep_16_bit = false);
 // read_png's checks and decoding of a file's bytes already in memory (`label` names them in
 // errors); read_png is this after reading the file. The fuzz harness (tests/fuzz) calls it.
-PngPixels decode_png(const std::string& bytes, const std::string& label, int channels, int max_side = 0);
+PngPixels decode_png(const std::string& bytes, const std::string& label, int channels, int max_side = 0,
+                     bool keep_16_bit = false);
 
 // Width and height (px) from a PNG file's header (its first 24 bytes), without decoding it; {0, 0}
 // if the file does not start like a PNG (read_png then says what is wrong). vascsim diff compares
