@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "sim/log/frame_log.h"
 #include "tests/cli_test_support.h"
 
 namespace vascsim::test {
@@ -67,6 +68,34 @@ TEST(ExportCommand, WritesChosenChannelsTimesAndFrames) {
   r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv --force");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("has no summary.json: the run was stopped or is still being written"), std::string::npos) << r.output;
+  std::filesystem::remove_all(dir);
+}
+
+// A log from another tool may hold channels "a/b" and "a_b", both a_b.csv: refused before any
+// file is written (one was written, then the other refused as "already exists").
+TEST(ExportCommand, ChannelsSharingAFileNameAreRefusedBeforeWriting) {
+  const std::string dir = fresh_temp_dir("export_same_name");
+  std::filesystem::create_directories(dir + "/csv");
+  FrameLogHeader header;
+  header.node_count = 2;
+  header.channels = {{"position", "m", ChannelLayout::kNodeVectors, 4},
+                     {"probe/pressure", "Pa", ChannelLayout::kScalars, 1},
+                     {"probe_pressure", "Pa", ChannelLayout::kScalars, 1}};
+  header.metadata = "{}";
+  {
+    FrameLogWriter log(dir + "/other.vlog", header);
+    log.append(0.0, {0, 0, 1, 0, 5, 6});
+    log.close();
+  }
+  CommandResult r = run_vascsim("export " + dir + "/other.vlog --csv " + dir + "/csv");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("channels \"probe/pressure\" and \"probe_pressure\" would both be written to probe_pressure.csv"),
+            std::string::npos)
+      << r.output;
+  EXPECT_TRUE(std::filesystem::is_empty(dir + "/csv"));
+  r = run_vascsim("export " + dir + "/other.vlog --csv " + dir + "/csv --channels position,probe_pressure");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read_text(dir + "/csv/probe_pressure.csv"), "time [s],value [Pa]\n0,6\n");
   std::filesystem::remove_all(dir);
 }
 

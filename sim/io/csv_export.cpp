@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 
 #include "sim/io/json_fields.h"
 #include "sim/io/output_file.h"
@@ -55,8 +56,14 @@ std::vector<std::string> export_csv(const FrameLogReader& log, const std::string
   }
   if (!std::filesystem::is_directory(dir)) throw InputError(dir + ": not a directory (create it first)");
   std::vector<std::string> paths;
+  std::map<std::string, std::string> channel_of_file;  // refused before any file is written
   for (std::size_t i : chosen) {
-    paths.push_back((std::filesystem::path(dir) / csv_file_name(channels[i].name)).string());
+    const std::string file = csv_file_name(channels[i].name);
+    const auto [it, fresh] = channel_of_file.emplace(file, channels[i].name);
+    if (!fresh)
+      throw InputError(log.path() + ": channels \"" + it->second + "\" and \"" + channels[i].name + "\" would both be written to " +
+                       file + " ('/' becomes '_'): export them one at a time (--channels) into different directories");
+    paths.push_back((std::filesystem::path(dir) / file).string());
     check_replaceable_output(paths.back(), options.overwrite, {log.path()});
   }
 
