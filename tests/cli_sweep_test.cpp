@@ -208,6 +208,7 @@ TEST(SweepCli, StoppedWhileWritingItsDirectorySaysSoAndIsTakenUpAgain) {
                                 "; the same command takes it up again")) << r.output;
   const CommandResult again = run_shell(command);
   ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_TRUE(has(again.output, "sweep seeds: 4000 runs in " + out + " (resuming)")) << again.output;
   EXPECT_TRUE(fs::exists(out + "/runs/3999/scene.json"));
 }
 

@@ -130,7 +130,8 @@ SweepDirectory prepare_sweep_directory(const SweepPlan& plan, const std::string&
       if (!same && !force)
         throw InputError(dir + ": holds the start of another sweep, stopped before its manifest.json was written: "
                                "choose another --out, or pass --force to start again");
-      if (!same) remove_sweep_outputs(root);
+      if (same) resumed = true;
+      else remove_sweep_outputs(root);
     } else if (!fs::is_empty(root, ec)) {
       throw InputError(dir + ": is not empty and holds no sweep (no manifest.json); choose a new or empty directory");
     }
