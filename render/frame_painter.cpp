@@ -66,15 +66,18 @@ Box2 world_box(const LogMetadata& meta, const FrameState& first) {
 // `gap` px on, its value on `baseline`; arrow, gap and value fit in `room` px. Where the
 // reference does not fit, a smaller round value is drawn, so the arrow always has the length
 // its label says.
-void legend_arrow(Canvas& c, glm::vec2 start, float baseline, float room, float gap, double px_per_newton,
+// Returns false, drawing nothing, where there is no room for an arrow at all (its entry's name
+// is then left out too: a name without its arrow read as a missing symbol).
+bool legend_arrow(Canvas& c, glm::vec2 start, float baseline, float room, float gap, double px_per_newton,
                   double reference, const DisplayUnit& unit, Rgba colour, float width, int font) {
   auto label = [&](double value) { return format_round_value(value, unit); };
   const double fits = (room - gap - c.text_width(label(reference), font)) / px_per_newton;  // N
   if (reference > fits) reference = fits > 0 ? nice_floor(fits) : 0;
   const float len = static_cast<float>(reference * px_per_newton);
-  if (len < 4.0f) return;  // no room for an arrow at all
+  if (len < 4.0f) return false;
   c.arrow(start, {start.x + len, start.y}, width, colour);
   c.text(label(reference), {start.x + len + gap, baseline}, font, kInk);
+  return true;
 }
 
 // A scale bar of a round length at most `max_px` long, its left end at `left` (the bar's
@@ -169,7 +172,9 @@ FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const 
   const double w = view.width, h = view.height;
   side_panel_ = view.side_panel();
   const bool hud = view.layers.has(Layer::kHud), legend = view.layers.has(Layer::kLegend);
-  font_px_ = std::max(9, static_cast<int>(std::lround(h / 36.0)));
+  // From the height, as for video frames; a frame taller than about twice its width (a phone's
+  // portrait view) takes it from the width, so the HUD card's rows keep their labels and values apart.
+  font_px_ = std::max(9, static_cast<int>(std::lround(std::min(h / 36.0, w / 16.8))));
   map_x0_ = 0;
   // The panel needs about 15 characters of width whatever the frame size. A frame too small for
   // it beside a map of 30 % of the width (a thumbnail) gets the card and band of narrow frames
@@ -364,10 +369,10 @@ void FramePainter::paint_band(Canvas& c) const {
   float x = x0 + 0.5f * pad;
   auto arrow_entry = [&](double px_per_newton, double reference, Rgba colour, float width, const char* what) {
     if (px_per_newton <= 0) return;
-    c.text(what, {x, y}, small, kInk);
     const float start = x + c.text_width(what, small) + 0.5f * fs;
-    legend_arrow(c, {start, y + mid}, y, x + half - start - 0.6f * fs, 0.4f * fs, px_per_newton, reference, scales_.unit,
-                 colour, width, small);
+    if (legend_arrow(c, {start, y + mid}, y, x + half - start - 0.6f * fs, 0.4f * fs, px_per_newton, reference,
+                     scales_.unit, colour, width, small))
+      c.text(what, {x, y}, small, kInk);
     x += half;
   };
   arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, actuation_arrow_width(H), "Magnetic");
@@ -401,6 +406,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   float y = y0 + pad + fs;
   char buf[64];
   panel_items_.clear();
+  hud_fields_.clear();
   // A line of text at baseline `baseline` reaches from one font size above it to a third below.
   const auto record = [&](const char* what, float first_baseline, float last_baseline) {
     panel_items_.push_back({what, lx, rx, first_baseline - fs, last_baseline + 0.35f * fs});
@@ -413,16 +419,26 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     }
     const DisplayUnit mm = length_unit(0.01);
     std::snprintf(buf, sizeof buf, "%.3f s", f.time);
-    auto field = [&](const char* label, const std::string& value) {
-      c.text(label, {lx, y}, fs, kMuted);
+    // The first label that leaves room for the value; in a card too narrow for any, the value
+    // alone (the rows' order is the same at every size).
+    auto field = [&](std::initializer_list<const char*> labels, const std::string& value) {
+      const float value_left = rx - c.text_width(value, fs);
+      const char* shown = nullptr;
+      for (const char* label : labels)
+        if (lx + c.text_width(label, fs) + 0.5f * fs <= value_left) {
+          shown = label;
+          break;
+        }
+      if (shown) c.text(shown, {lx, y}, fs, kMuted);
       c.text(value, {rx, y}, fs, kInk, TextAlign::kRight);
+      hud_fields_.push_back({shown ? shown : "", shown ? lx + c.text_width(shown, fs) : lx, value_left});
       y += row;
     };
-    field("Time", buf);
-    field("Tip error", f.tip_error >= 0 ? format_value(f.tip_error, mm, 2) : std::string("n/a"));
-    field("Magnetic force",
+    field({"Time", "t"}, buf);
+    field({"Tip error", "Error"}, f.tip_error >= 0 ? format_value(f.tip_error, mm, 2) : std::string("n/a"));
+    field({"Magnetic force", "Magnetic", "Force"},
           f.actuation.empty() ? std::string("n/a") : format_value(f.actuation_total().norm(), scales_.unit, 2));
-    field("Max contact", f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
+    field({"Max contact", "Contact"}, f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
     record("hud", hud_top, y - row);
   }
   if (!side_panel_ || !legend) return;

@@ -75,6 +75,13 @@ class FramePainter {
     float left, right, top, bottom;
   };
   const std::vector<PanelItem>& panel_items() const { return panel_items_; }
+  // The HUD's rows as last painted: the label shown (shortened, or none, where the value needs
+  // the room) and where it ends and its value starts (px).
+  struct HudField {
+    const char* label;  // "" for none
+    float label_right, value_left;
+  };
+  const std::vector<HudField>& hud_fields() const { return hud_fields_; }
 
  private:
   glm::dmat3 camera(const FrameState& frame) const;
@@ -103,6 +110,7 @@ class FramePainter {
   int font_px_;
   std::vector<glm::vec2> scratch_;
   std::vector<PanelItem> panel_items_;
+  std::vector<HudField> hud_fields_;
   bool lumen_is_box_ = false;              // meta_.lumen is one axis-aligned rectangle, lumen_box_
   Box2 lumen_box_;                         // m
   std::vector<Triangle> lumen_triangles_;  // m, meta_.lumen's interior unless lumen_is_box_

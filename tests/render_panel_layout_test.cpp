@@ -17,7 +17,12 @@ namespace {
 
 using testing::ScratchDir;
 
-std::vector<FramePainter::PanelItem> panel_at(const std::string& run, int width, int height) {
+struct Painted {
+  std::vector<FramePainter::PanelItem> items;
+  std::vector<FramePainter::HudField> hud;
+};
+
+Painted paint_at(const std::string& run, int width, int height) {
   FrameSource source(run);
   View view;
   view.width = width;
@@ -27,7 +32,11 @@ std::vector<FramePainter::PanelItem> panel_at(const std::string& run, int width,
   FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state);
   Canvas canvas(width, height);
   painter.paint(canvas, state, {});
-  return painter.panel_items();
+  return {painter.panel_items(), painter.hud_fields()};
+}
+
+std::vector<FramePainter::PanelItem> panel_at(const std::string& run, int width, int height) {
+  return paint_at(run, width, height).items;
 }
 
 std::size_t count(const std::vector<FramePainter::PanelItem>& items, const std::string& what) {
@@ -55,6 +64,24 @@ TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
       if (k > 0) {
         EXPECT_LE(items[k - 1].bottom, items[k].top) << size << ": " << items[k - 1].what << " over " << items[k].what;
       }
+    }
+  }
+  // The HUD's labels and values never run into each other: a 200 x 600 portrait frame wrote
+  // "Magnetic forc1.88 mN"; narrow cards shorten the labels, and drop them only when nothing fits.
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{1280, 720}, {200, 600}, {120, 400}, {160, 120}, {60, 400}}) {
+    const std::string size = std::to_string(w) + " x " + std::to_string(h);
+    const auto hud = paint_at(run, w, h).hud;
+    ASSERT_EQ(hud.size(), 4u) << size;
+    for (const auto& field : hud) {
+      EXPECT_GE(field.value_left, 0.0f) << size;
+      if (*field.label) {
+        EXPECT_LT(field.label_right, field.value_left) << size << ": " << field.label;
+      } else {
+        EXPECT_LT(w, 120) << size << ": a row without its label";
+      }
+    }
+    if (w >= 640) {
+      EXPECT_STREQ(hud[2].label, "Magnetic force") << size << ": a frame with room shortens nothing";
     }
   }
   // A frame with room shows the whole legend (two force arrows and four symbols) and the scale bar.
