@@ -148,6 +148,25 @@ TEST(Advance, AFeedThatStopsAsTheReferenceRampEndsRunsOn) {
   EXPECT_NEAR(run.statistics().simulated_time, 1.5, 1e-9);
 }
 
+// A drive that pulls the rod back draws its root out along the introducer behind the start: the
+// introducer reaches back past the furthest retraction (it ended two vessel radii behind the
+// root, and a rod pulled further was dragged through its closed end until the run blew up).
+// Nothing touches a wall in a straight vessel, so the tip follows the root back.
+TEST(Advance, ARodPulledBackFurtherThanItsRootHasRoomSlidesOutAlongTheIntroducer) {
+  std::string text = kStraightVessel;
+  const std::string feed = R"("advance": {"points": [[0, 0], [0.5, 0.0125], [3, 0.1375]]})";
+  text.replace(text.find(feed), feed.size(), R"("advance": {"points": [[0, 0], [1, -0.3]]})");
+  const std::string run_section = R"("run": {"duration": 3, "output_interval": 0.1})";
+  text.replace(text.find(run_section), run_section.size(), R"("run": {"duration": 1.5, "output_interval": 0.1})");
+  const Scene scene = read_scene_text(text, "advance.json");
+  vascsim::Run run(compile(scene));
+  Frames frames;
+  ASSERT_TRUE(run.run(frames)) << run.statistics().failure;
+  const int tip_x = 2 * (scene.rod.nodes - 1);
+  EXPECT_NEAR(frames.values.back()[tip_x] - frames.values.front()[tip_x], -0.3, 1e-3);
+  EXPECT_NEAR(frames.values.back()[tip_x + 1], frames.values.front()[tip_x + 1], 1e-9);
+}
+
 TEST(Advance, ProfilesAndErrors) {
   AdvanceSpec a;
   a.points = {{1.0, 0.0}, {3.0, 0.1}};

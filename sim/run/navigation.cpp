@@ -81,7 +81,10 @@ std::unique_ptr<Navigation> prepare_navigation(Scene& scene) {
   try {
     if (scene.environment == EnvironmentKind::kMaze) prepare_maze(scene, *nav);
     else {
-      nav->environment = build_vessel_environment(scene.vessels, scene.rod.length);
+      // A drive that pulls the rod back draws its root further out along the introducer.
+      double retraction = 0.0;  // m
+      for (const auto& point : scene.control.advance.points) retraction = std::max(retraction, -point.second);
+      nav->environment = build_vessel_environment(scene.vessels, scene.rod.length + retraction);
       for (double& r : nav->environment.corner_radius) r = std::min(r, scene.path.corner_radius);
     }
   } catch (const InputError& e) {
