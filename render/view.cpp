@@ -1,5 +1,7 @@
 #include "render/view.h"
 
+#include <cmath>
+
 #include "sim/io/decimal_text.h"
 #include "sim/scene/input_error.h"
 
@@ -111,6 +113,10 @@ Vec2 parse_centre(const std::string& text) {
   Vec2 c;
   if (parts.size() != 2 || !number(parts[0], c.x()) || !number(parts[1], c.y()))
     throw InputError("expected X,Y in metres (two finite numbers), got '" + text.substr(0, 64) + "'");
+  // Past the scenes' bounds a view shows nothing; at 1e308 its transform overflowed to NaN.
+  constexpr double kMaxCentre = 1e3;  // m: scene geometry lies within 1000 m (sim/io/scene_sections.h)
+  if (std::abs(c.x()) > kMaxCentre || std::abs(c.y()) > kMaxCentre)
+    throw InputError("expected X,Y in metres within 1000 m of the origin (where scenes lie), got '" + text.substr(0, 64) + "'");
   return c;
 }
 

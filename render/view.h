@@ -62,7 +62,8 @@ LayerSet hide_layers(LayerSet base, const std::string& list);
 // "fit", "follow", "center" (and "centre"). Throws InputError otherwise.
 CameraMode parse_camera(const std::string& name);
 const char* camera_name(CameraMode mode);
-// "X,Y" in metres, both finite. Throws InputError otherwise.
+// "X,Y" in metres, both finite and within 1000 m of the origin, where scene
+// geometry lies. Throws InputError otherwise.
 Vec2 parse_centre(const std::string& text);
 
 struct View {

@@ -41,6 +41,10 @@ TEST(RenderView, LayerListsParseAndPrintBack) {
   EXPECT_THROW(parse_centre("1,2,3"), InputError);
   EXPECT_THROW(parse_centre("nan,1"), InputError);
   EXPECT_EQ(parse_centre("0.25,-1e-3"), Vec2(0.25, -1e-3));
+  // Beyond the scenes' 1000 m the view shows nothing (at 1e308 its transform overflowed to NaN).
+  EXPECT_EQ(parse_centre("-1000,1000"), Vec2(-1000, 1000));
+  EXPECT_THROW(parse_centre("1e308,1e308"), InputError);
+  EXPECT_THROW(parse_centre("0,-1000.5"), InputError);
 }
 
 // Each layer, turned off alone, changes the picture of a frame that has something for it.

@@ -186,6 +186,7 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
       {"/api/frame.png?camera=center", "center"},
       {"/api/frame.png?center=1", "center"},
       {"/api/frame.png?center=1,nan", "center"},
+      {"/api/frame.png?center=1e308,1e308", "center"},
       {"/api/frame.png?camera=fit&center=0.1,0.1", "center"},  // the centre was ignored
       {"/api/frame.png?layers=walls,bogus", "layers"},
       {"/api/frame.png?layers=walls,walls", "layers"},
