@@ -161,6 +161,29 @@ TEST(SelfContact, TheKeptPairListGivesWhatAFreshSearchGives) {
   EXPECT_GT(pairs_seen, 32) << "the spiral should touch itself on most steps";
 }
 
+// A rod that starts coiled over itself has no barrier to start from: refused at compile time,
+// naming the setting, where it failed at t = 0 as "the rod blew up".
+TEST(SelfContact, ARodStartingOverItselfIsRefusedNamingTheShape) {
+  const auto scene_with_curvature = [](double curvature) {
+    return read_scene_text(R"({"maze": null, "rod": {"length": 0.1, "nodes": 60}, "boundary": {"clamp": "first_edge"},
+        "contact": {"self": true}, "shape": {"initial_curvature": )" + std::to_string(curvature) + R"(}, "run": {"duration": 0.01}})",
+                           "coiled.json");
+  };
+  try {
+    compile(scene_with_curvature(4 * M_PI / 0.1));  // two turns of one circle
+    ADD_FAILURE() << "a rod coiled twice over itself was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("coiled.json: /contact/self: the rod starts overlapping itself (node ", 0), 0u) << what;
+    EXPECT_NE(what.find("/shape/initial_curvature"), std::string::npos) << what;
+  }
+  // Half a circle does not touch itself: it compiles and runs.
+  vascsim::Run run(compile(scene_with_curvature(M_PI / 0.1)));
+  CrossingCounter counter;
+  counter.nodes = 60;
+  EXPECT_TRUE(run.run(counter)) << run.statistics().failure;
+}
+
 TEST(SelfContact, RefusedInStaticMode) {
   EXPECT_THROW(read_scene_text(R"({"maze": null, "contact": {"self": true}, "solver": {"mode": "static"}})", "s.json"),
                InputError);

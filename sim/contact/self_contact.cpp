@@ -122,13 +122,15 @@ void SelfContactModule::add(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd>
   }
 }
 
-bool SelfContactModule::defined_at(const ForceContext& ctx) const {
-  const Eigen::VectorXd& x = *ctx.x;
-  for (const auto& [node, edge] : candidate_pairs(x, thickness_))
-    if (point_segment_distance_value(x.segment<2>(2 * node), x.segment<2>(2 * edge), x.segment<2>(2 * edge + 2)) <= thickness_)
-      return false;
-  return true;
+std::optional<SelfContactModule::Overlap> SelfContactModule::first_overlap(const Eigen::VectorXd& x) const {
+  for (const auto& [node, edge] : candidate_pairs(x, thickness_)) {
+    const double d = point_segment_distance_value(x.segment<2>(2 * node), x.segment<2>(2 * edge), x.segment<2>(2 * edge + 2));
+    if (d <= thickness_) return Overlap{node, edge, d};
+  }
+  return std::nullopt;
 }
+
+bool SelfContactModule::defined_at(const ForceContext& ctx) const { return !first_overlap(*ctx.x); }
 
 double SelfContactModule::max_step_fraction(const ForceContext& ctx, const Eigen::VectorXd& dx) const {
   const Eigen::VectorXd& x = *ctx.x;

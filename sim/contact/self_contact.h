@@ -13,6 +13,7 @@
 // forces are the same bit for bit. Channel force/contact.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "sim/contact/contact_params.h"
@@ -32,6 +33,14 @@ class SelfContactModule : public ForceModule {
   bool defined_at(const ForceContext& ctx) const override;
   std::unique_ptr<ModuleCache> make_cache() const override;
 
+  // A node and an edge (its first node) of positions `x` closer than the rod's thickness: the
+  // rod overlaps itself there, where the barrier is not defined. None if it does not.
+  struct Overlap {
+    int node, edge;
+    double distance;  // m, between the centre lines
+  };
+  std::optional<Overlap> first_overlap(const Eigen::VectorXd& x) const;
+  double thickness() const { return thickness_; }
   // Node-edge pairs (node, first node of the edge) whose distance may be below `reach` (m).
   std::vector<std::pair<int, int>> candidate_pairs(const Eigen::VectorXd& x, double reach) const;
 

@@ -1,6 +1,7 @@
 #include "sim/step/model.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "sim/contact/self_contact.h"
@@ -100,8 +101,21 @@ Model build_model(const Scene& scene) {
   if (loads.drag.enabled) model.forces.push_back(std::make_unique<QuadraticDragModule>(model.rod, loads.drag));
   if (loads.magnet.enabled) model.forces.push_back(std::make_unique<MagnetLoadModule>(n, loads.magnet));
   if (body_drag) model.forces.push_back(std::make_unique<BodyDragModule>(n, loads.bodies));
-  if (scene.contact.self)
-    model.forces.push_back(std::make_unique<SelfContactModule>(model.rod, resolve_contact_params(scene.contact, model.rod)));
+  if (scene.contact.self) {
+    auto self = std::make_unique<SelfContactModule>(model.rod, resolve_contact_params(scene.contact, model.rod));
+    // A rod that starts overlapping itself (a shape coiled tighter than its thickness) has no
+    // barrier to start from: said here, not as a blow-up at t = 0.
+    if (const auto overlap = self->first_overlap(model.rod.x_initial)) {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    ": /contact/self: the rod starts overlapping itself (node %d is %.3g mm from the edge of nodes %d and %d, "
+                    "less than its thickness %.3g mm, /rod/outer_radius): give it a starting shape that does not cross "
+                    "itself (/shape/initial_curvature) or turn self-contact off",
+                    overlap->node, 1e3 * overlap->distance, overlap->edge, overlap->edge + 1, 1e3 * self->thickness());
+      throw InputError(scene.file + text);
+    }
+    model.forces.push_back(std::move(self));
+  }
   return model;
 }
 
