@@ -18,6 +18,9 @@ struct BadScene {
 const BadScene kBadScenes[] = {
     {"rows_zero", R"({"maze": {"rows": 0}})", "/maze/rows: expected an integer in [1, 200], got 0"},
     {"rows_float", R"({"maze": {"rows": 2.5}})", "/maze/rows: expected an integer in [1, 200], got 2.5"},
+    // A whole number written as a float is not taken for one; the message says how to write it.
+    {"rows_whole_float", R"({"maze": {"rows": 5e1}})",
+     "/maze/rows: expected an integer in [1, 200] written without a decimal point or exponent, got 50.0"},
     {"cols_string", R"({"maze": {"cols": "five"}})", "/maze/cols: expected an integer in [1, 200], got \"five\""},
     {"unknown_top", R"({"mazes": {}})", "/mazes: unknown key"},
     {"unknown_nested", R"({"rod": {"nodes": 10, "lenght": 0.5}})", "/rod/lenght: unknown key"},

@@ -52,6 +52,9 @@ const BadVessels kBad[] = {
      "/vessels/segments/0/via/0: expected a point [x, y] (m), got [\"0.2\",0.1]"},
     {"radius_negative", R"({"vessels": {)" NODES R"(, "segments": [{"from": "a", "to": "j", "radius": -1}], "start": "a", "goal": "j"}})",
      "/vessels/segments/0/radius: expected a number in (0, 1000], got -1"},
+    // An empty object is said to be empty ("expected an object of named points, got an object").
+    {"empty_nodes", R"({"vessels": {"nodes": {}, "segments": [], "start": "a", "goal": "j"}})",
+     "/vessels/nodes: expected an object of named points, e.g. {\"inlet\": [1.0, 0.5]}, got an empty object"},
     {"no_nodes", R"({"vessels": {"segments": [], "start": "a", "goal": "j"}})",
      "/vessels/nodes: expected an object of named points, e.g. {\"inlet\": [1.0, 0.5]}, got null"},
     {"inlet_not_an_end", R"({"vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(, {"from": "j", "to": "b", "radius": 0.04}, {"from": "j", "to": "c", "radius": 0.04}], "start": "j", "goal": "b"}})",
@@ -113,7 +116,7 @@ const BadVessels kBad[] = {
         "aneurysms": [{"at": 0.01, "side": "left", "radius": 0.08, "neck": 0.15}]}], "start": "a", "goal": "b"}})",
      "/vessels/start: the rod's way in (straight back from the start along the inlet for the rod's length and two inlet radii, 0.56 m) comes within the introducer's radius of an aneurysm on the inlet that reaches back past the start, at (0."},
     {"maze_and_vessels", R"({"maze": {}, "vessels": {)" NODES R"(, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j"}})",
-     "/maze: expected no \"maze\" beside \"vessels\" (a scene has one environment), got an object"},
+     "/maze: expected no \"maze\" beside \"vessels\" (a scene has one environment), got an empty object"},
     // Found by the scene fuzz harness: a far point overflowed the lumen's integer geometry
     // (Clipper), an internal error with no file named.
     {"node_far_away", R"({"vessels": {"nodes": {"a": [0, 0], "j": [1e19, 0]}, "segments": [)" TUBE("") R"(], "start": "a", "goal": "j"}})",

@@ -26,7 +26,7 @@ std::string utf8_prefix(const std::string& text, std::size_t max) {
 }
 
 std::string describe(const json& value) {
-  if (value.is_object()) return "an object";
+  if (value.is_object()) return value.empty() ? "an empty object" : "an object";
   // Never dump what may be large or deep: a message quotes at most a short flat array.
   if (value.is_array()) {
     bool flat = value.size() <= 6;
@@ -257,6 +257,9 @@ long long FieldReader::integer(const std::string& key, long long fallback, long 
     if (x < min || x > max) fail(key, expected, *v);
     return x;
   }
+  // 50.0 and 5e1 are JSON floats: "expected an integer, got 50.0" read as a contradiction.
+  if (v->is_number_float() && std::isfinite(v->get<double>()) && std::floor(v->get<double>()) == v->get<double>())
+    fail(key, expected + " written without a decimal point or exponent", *v);
   fail(key, expected, *v);
 }
 
