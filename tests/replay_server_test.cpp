@@ -160,6 +160,9 @@ TEST(ReplayServer, NoTokenModeServesWithoutOne) {
   EXPECT_EQ(s.server().url().find("token"), std::string::npos);
   // Nor a token to stop another site: a Host it names (DNS rebinding) or a post from its page.
   EXPECT_EQ(s.client().Get("/api/run", {{"Host", "evil.example.com"}})->status, 403);
+  // Not behind a loopback one either: the first of two Hosts (or Origins) was the only one checked.
+  EXPECT_EQ(s.client().Get("/api/run", {{"Host", "127.0.0.1"}, {"Host", "evil.example.com"}})->status, 403);
+  EXPECT_EQ(s.client().Get("/api/run", {{"Origin", "http://127.0.0.1"}, {"Origin", "http://evil.example.com"}})->status, 403);
   EXPECT_EQ(s.client().Post("/api/bookmarks", {{"Origin", "http://evil.example.com"}}, R"({"name": "x", "t": 0})", "text/plain")->status, 403);
   EXPECT_EQ(s.client().Get("/api/run", {{"Host", "localhost:1"}, {"Origin", "http://127.0.0.1:1"}})->status, 200);
 }
@@ -213,6 +216,12 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
     EXPECT_EQ(body.value("parameter", ""), parameter) << query << ": " << body.dump();
     EXPECT_NE(body.value("error", "").find(parameter), std::string::npos) << query << ": " << body.dump();
   }
+  // A value without a name is said to be one (the answer blamed a parameter named like the value).
+  const json nameless = get_json(s, "/api/run?=a", 400);
+  EXPECT_EQ(nameless.value("parameter", ""), "query") << nameless.dump();
+  EXPECT_NE(nameless.value("error", "").find("a value without a parameter name"), std::string::npos) << nameless.dump();
+  // A control character in a value is shown escaped: a NUL cut the message short ("got '1").
+  EXPECT_NE(get_json(s, "/api/frame.png?t=1%00x", 400).value("error", "").find("got '1\\x00x'"), std::string::npos);
   const auto odd = s.client().Post(s.authorised("/api/export?width=321&height=240").c_str(), "", "text/plain");
   ASSERT_TRUE(odd);
   EXPECT_EQ(odd->status, 400);
@@ -379,6 +388,14 @@ TEST(ReplayServer, CompareAlignsRunsBySimulatedTime) {
                 .exit_code,
             0);
   EXPECT_TRUE(s.get("/api/frame.png?t=3&width=320&height=240&overlay=b")->body == vascsim::test::read_text(png));
+  // With two runs served, a refused overlay says what is wrong with it (it said "needs two runs").
+  for (const auto& [query, message] : std::vector<std::pair<std::string, std::string>>{
+           {"/api/frame.png?run=b&overlay=b", "overlay: goes with run=a"}, {"/api/frame.png?overlay=c", "got 'c'"}}) {
+    const json body = get_json(s, query, 400);
+    EXPECT_EQ(body.value("parameter", ""), "overlay") << query;
+    EXPECT_NE(body.value("error", "").find(message), std::string::npos) << query << ": " << body.dump();
+    EXPECT_EQ(body.value("error", "").find("needs two runs"), std::string::npos) << query << ": " << body.dump();
+  }
 
   // The shorter run first: the overlay, the longer run, moves on past the first run's end (each
   // run clamped to its own range, not the overlay to run a's).

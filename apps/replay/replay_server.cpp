@@ -176,6 +176,11 @@ struct ReplayServer::Impl {
       if (!h.empty() && h[0] == '[') return h.substr(0, h.find(']') + 1);
       return h.substr(0, h.find(':'));
     };
+    // Every Host and Origin given must be loopback: the library answers with the first of two
+    // (RFC 9112 makes two Hosts an error), which a later one must not get past.
+    for (const char* header : {"Host", "Origin"})
+      for (std::size_t k = 1; k < req.get_header_value_count(header); ++k)
+        if (!is_loopback(host_of(req.get_header_value(header, k)))) return false;
     if (!is_loopback(host_of(req.get_header_value("Host")))) return false;
     const std::string origin = req.get_header_value("Origin");
     return origin.empty() || is_loopback(host_of(origin));
@@ -229,8 +234,10 @@ struct ReplayServer::Impl {
   ReplayRun* overlay_of(const RequestParams& p, const ReplayRun& run) {
     const auto o = p.text("overlay");
     if (!o) return nullptr;
-    if (runs.size() < 2 || *o != "b" || run.id() != "a")
-      throw ParamError("overlay", "expected b (the second run, drawn over run a's map; needs two runs)");
+    if (runs.size() < 2) throw ParamError("overlay", "needs two runs (vascsim replay RUN_A RUN_B)");
+    if (*o != "b") throw ParamError("overlay", "expected b (the second run, drawn over run a's map), got '" + o->substr(0, 64) + "'");
+    // Run b over itself would draw one rod twice.
+    if (run.id() != "a") throw ParamError("overlay", "goes with run=a (run b is drawn over run a's map, not over its own)");
     return &current(1);
   }
 
@@ -513,6 +520,12 @@ struct ReplayServer::Impl {
     };
   }
   static void refuse_unknown_parameters(const httplib::Request& req, const std::vector<std::string>& takes) {
+    // cpp-httplib reads "=a" as a parameter named "a": a value without a name is refused as such.
+    if (const auto mark = req.target.find('?'); mark != std::string::npos) {
+      const std::string raw = "&" + req.target.substr(mark + 1);
+      if (raw.find("&=") != std::string::npos)
+        throw ParamError("query", "a value without a parameter name ('=...')");
+    }
     const auto query = query_of(req);
     for (const auto& [name, value] : query) {
       if (name == "token" || std::find(takes.begin(), takes.end(), name) != takes.end()) continue;

@@ -11,9 +11,20 @@ namespace vascsim::replay {
 namespace {
 
 // A parameter value quoted in an error message, cut short: the message must not echo a huge or
-// hostile input back.
+// hostile input back. Control characters are shown as \xNN (a NUL, t=1%00, ended the message).
 std::string quoted(const std::string& value) {
-  return "'" + (value.size() > 40 ? value.substr(0, 40) + "..." : value) + "'";
+  std::string shown;
+  for (const char c : value.substr(0, 40)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7F) {
+      shown += c;
+    } else {
+      char escaped[5];
+      std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
+      shown += escaped;
+    }
+  }
+  return "'" + shown + (value.size() > 40 ? "..." : "") + "'";
 }
 
 }  // namespace
