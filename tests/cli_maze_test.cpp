@@ -30,6 +30,10 @@ TEST(CliMaze, UsageErrorsExitTwo) {
   const Case cases[] = {
       {"maze --bogus --out " + dir + "/m.json", "unknown option '--bogus'"},
       {"maze --rows 0 --out " + dir + "/m.json", "--rows: expected an integer in [1, 200], got '0'"},
+      // Named by the option, not as the built-in scene's /maze/lumen_width.
+      {"maze --lumen-width 1e-6 --out " + dir + "/m.json", "--lumen-width: the lumen (0.001 mm) must be wider than the rod (4 mm across, /rod/outer_radius)"},
+      // One cell holds both the start and the goal: a run reached its goal at its first step.
+      {"maze --rows 1 --cols 1 --out " + dir + "/m.json", "--rows 1 --cols 1: a maze has at least 2 cells (its start and goal are different cells)"},
       {"maze --rows", "option '--rows' needs a value R"},
       // An unset variable in a script: named, not ": cannot write".
       {"maze --out ''", "option '--out' needs a value FILE, got an empty one"},

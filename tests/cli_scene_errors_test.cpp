@@ -18,6 +18,8 @@ struct BadScene {
 const BadScene kBadScenes[] = {
     {"rows_zero", R"({"maze": {"rows": 0}})", "/maze/rows: expected an integer in [1, 200], got 0"},
     {"rows_float", R"({"maze": {"rows": 2.5}})", "/maze/rows: expected an integer in [1, 200], got 2.5"},
+    {"one_cell", R"({"maze": {"rows": 1, "cols": 1}})",
+     "/maze/cols: expected a maze of at least 2 cells (its start and goal are different cells), got 1"},
     // A whole number written as a float is not taken for one; the message says how to write it.
     {"rows_whole_float", R"({"maze": {"rows": 5e1}})",
      "/maze/rows: expected an integer in [1, 200] written without a decimal point or exponent, got 50.0"},
@@ -104,6 +106,12 @@ TEST(SceneFiles, MissingFileAndInvalidJson) {
   r = run_vascsim("maze --scene " + dir + "/broken.json --out " + dir + "/m.json");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find(dir + "/broken.json: not valid JSON"), std::string::npos) << r.output;
+  // A number no double holds is placed by line and column (the parser names only the number).
+  write_text(dir + "/huge.json", "{\"maze\": {\"rows\": 5},\n  \"path\": {\"speed\": 1e400}}");
+  r = run_vascsim("maze --scene " + dir + "/huge.json --out " + dir + "/m.json");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find(dir + "/huge.json: a number out of the double range at line 2, column 21"), std::string::npos)
+      << r.output;
   std::filesystem::remove_all(dir);
 }
 

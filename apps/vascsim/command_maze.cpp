@@ -60,9 +60,20 @@ int run_maze_command(int argc, char** argv) {
   maze.seed = static_cast<std::uint64_t>(args.integer("seed", static_cast<long long>(maze.seed), 0, 9007199254740991LL));
   maze.rows = static_cast<int>(args.integer("rows", maze.rows, 1, 200));
   maze.cols = static_cast<int>(args.integer("cols", maze.cols, 1, 200));
+  if (maze.rows * maze.cols < 2)
+    throw UsageError("--rows " + std::to_string(maze.rows) + " --cols " + std::to_string(maze.cols) +
+                     ": a maze has at least 2 cells (its start and goal are different cells)");
   const double pitch = std::min(maze.width / maze.cols, maze.height / maze.rows);
   maze.lumen_width = std::min(maze.lumen_width, pitch);  // a finer grid narrows the default lumen to fit
   maze.lumen_width = args.number("lumen-width", maze.lumen_width, 1e-6, pitch);
+  // Said of the option that made the lumen too narrow, not of the scene's /maze/lumen_width.
+  if (generator_option && maze.lumen_width <= 2.0 * scene.rod.outer_radius) {
+    char text[240];
+    std::snprintf(text, sizeof text, "%s the lumen (%g mm) must be wider than the rod (%g mm across, /rod/outer_radius)",
+                  args.value("lumen-width") ? "--lumen-width:" : "--rows/--cols: cells this small narrow the lumen, and",
+                  1e3 * maze.lumen_width, 2e3 * scene.rod.outer_radius);
+    throw UsageError(text);
+  }
   if (auto s = args.value("solver")) {
     if (*s != "wall_follower" && *s != "bfs") throw UsageError("--solver: expected wall_follower or bfs, got '" + *s + "'");
     scene.path.solver = *s == "bfs" ? PathSolver::kBreadthFirst : PathSolver::kWallFollower;

@@ -1,5 +1,6 @@
 #include "sim/io/json_fields.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -111,7 +112,21 @@ json parse_json_strictly(const std::string& text, const std::string& label) {
     // nlohmann reports the byte offset; that is enough to find the mistake.
     throw InputError(label + ": not valid JSON (" + std::string(e.what()) + ")");
   } catch (const json::out_of_range& e) {
-    throw InputError(label + ": a number out of the double range (" + std::string(e.what()) + ")");
+    // nlohmann names the number ("number overflow parsing '1e400'") but not where it is: its
+    // first occurrence gives the line and column.
+    const std::string what = e.what();
+    const std::size_t open = what.find('\''), close = what.rfind('\'');
+    std::string where;
+    if (open != std::string::npos && close > open + 1) {
+      const std::size_t at = text.find(what.substr(open + 1, close - open - 1));
+      if (at != std::string::npos) {
+        const std::size_t line_start = text.rfind('\n', at);
+        const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+        const std::size_t column = at - (line_start == std::string::npos ? 0 : line_start + 1) + 1;
+        where = " at line " + std::to_string(line) + ", column " + std::to_string(column);
+      }
+    }
+    throw InputError(label + ": a number out of the double range" + where + " (" + what + ")");
   }
 }
 

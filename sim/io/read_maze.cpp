@@ -50,6 +50,11 @@ void read_maze(FieldReader& in, MazeSpec& out) {
   } else {
     out.rows = static_cast<int>(in.integer("rows", out.rows, 1, 200));
     out.cols = static_cast<int>(in.integer("cols", out.cols, 1, 200));
+    // The start and the goal are opposite corner cells: one cell holds both, and a run "reached
+    // its goal" at its first step (vessel scenes refuse a start that is the goal).
+    if (out.rows * out.cols < 2)
+      in.fail(in.has("cols") ? "cols" : "rows", "a maze of at least 2 cells (its start and goal are different cells)",
+              *in.raw(in.has("cols") ? "cols" : "rows"));
     out.seed = static_cast<std::uint64_t>(in.integer("seed", static_cast<long long>(out.seed), 0, 9007199254740991LL));
     const double pitch = std::min(out.width / out.cols, out.height / out.rows);
     out.lumen_width = in.number("lumen_width", std::min(out.lumen_width, pitch), 1e-6, pitch);
