@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <tuple>
 
 #include "render/frame_pipeline.h"
 #include "render/frame_source.h"
@@ -42,14 +43,14 @@ void check_outputs_apart(const RenderOptions& o) {
   };
   const fs::path video = resolved(o.mp4_path);
   const std::string name = video.filename().string();
-  for (const auto& [dir, option] : {std::pair{o.png_dir, "--png-dir"}, std::pair{o.plots_dir, "--plots"}}) {
+  const bool a_frame = is_rendered_frame_name(name);
+  const bool a_plot = std::find(std::begin(kRunPlotFiles), std::end(kRunPlotFiles), name) != std::end(kRunPlotFiles);
+  for (const auto& [dir, option, one_of_its_files] : {std::tuple{o.png_dir, "--png-dir", a_frame}, std::tuple{o.plots_dir, "--plots", a_plot}}) {
     if (dir.empty()) continue;
-    if (resolved(dir) == video)
+    const fs::path written_to = resolved(dir);
+    if (written_to == video)
       throw InputError("--mp4 " + o.mp4_path + " is the directory " + option + " writes to: name the video otherwise");
-    if (resolved(dir) != video.parent_path()) continue;
-    const bool plot = std::string(option) == "--plots" &&
-                      std::find(std::begin(kRunPlotFiles), std::end(kRunPlotFiles), name) != std::end(kRunPlotFiles);
-    if (plot || (std::string(option) == "--png-dir" && is_rendered_frame_name(name)))
+    if (written_to == video.parent_path() && one_of_its_files)
       throw InputError("--mp4 " + o.mp4_path + " is one of the files " + option + " " + dir + " writes: name the video otherwise");
   }
 }
