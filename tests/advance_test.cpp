@@ -167,6 +167,32 @@ TEST(Advance, ARodPulledBackFurtherThanItsRootHasRoomSlidesOutAlongTheIntroducer
   EXPECT_NEAR(frames.values.back()[tip_x + 1], frames.values.front()[tip_x + 1], 1e-9);
 }
 
+// A drive that keeps pushing a rod whose tip is stopped by a closed vessel's end buckles it until
+// the run blows up. The steps just before, though converged, gave the drive's reaction as NaN,
+// and the summary's feed_force_mean came out null: the run must stop at that step instead, say
+// why, and keep its statistics finite.
+TEST(Advance, PushingABlockedRodStopsWithAClearMessageAndFiniteFeedStatistics) {
+  const char* blocked = R"({
+    "name": "blocked",
+    "vessels": {"nodes": {"in": [0.1, 0.5], "end": [0.16, 0.5]}, "segments": [{"from": "in", "to": "end", "radius": 0.006}],
+                "start": "in", "goal": "end"},
+    "rod": {"nodes": 40, "length": 0.3, "outer_radius": 0.001, "inner_radius": 0.0005},
+    "loads": {"drag": {"enabled": true, "area": "nodes"}, "damping": {"enabled": true, "coefficient": 0.05}},
+    "control": {"mode": "none", "disturbance": {"amplitude": 0}, "advance": {"speed": 0.5, "start": 0, "stop": 1}},
+    "run": {"duration": 1, "output_interval": 0.03333333333333333}
+  })";
+  vascsim::Run run(compile(read_scene_text(blocked, "blocked.json")));
+  Frames frames;
+  const bool ok = run.run(frames);
+  const RunStatistics& s = run.statistics();
+  EXPECT_TRUE(std::isfinite(s.feed_force_max));
+  EXPECT_TRUE(std::isfinite(s.feed_force_mean)) << s.failure;
+  EXPECT_FALSE(frames.times.empty());
+  if (!ok) {
+    EXPECT_NE(s.failure.find("control.advance"), std::string::npos) << s.failure;
+  }
+}
+
 TEST(Advance, ProfilesAndErrors) {
   AdvanceSpec a;
   a.points = {{1.0, 0.0}, {3.0, 0.1}};
