@@ -63,8 +63,8 @@ void validate_render_options(const RenderOptions& o) {
     throw InputError("frame size " + std::to_string(v.width) + "x" + std::to_string(v.height) +
                      ": expected 16..7680 x 16..4320 px");
   if (!o.mp4_path.empty() && (v.width % 2 || v.height % 2))
-    throw InputError("video frame size must be even (yuv420p), got " + std::to_string(v.width) + "x" +
-                     std::to_string(v.height));
+    throw InputError("--width " + std::to_string(v.width) + " --height " + std::to_string(v.height) +
+                     ": an MP4 (yuv420p) needs an even frame width and height");
   if (o.fps < 1 || o.fps > 240) throw InputError("fps: expected 1..240, got " + std::to_string(o.fps));
   if (!(o.speed > 0) || !std::isfinite(o.speed)) throw InputError("speed: expected a positive number");
   if (!(v.zoom > 0) || !std::isfinite(v.zoom)) throw InputError("zoom: expected a positive number");

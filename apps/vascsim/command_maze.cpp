@@ -17,7 +17,7 @@ const std::vector<OptionSpec> kOptions = {
     {"seed", "S", "maze generator seed (overrides the scene)"},
     {"rows", "R", "maze rows, 1..200 (overrides the scene)"},
     {"cols", "C", "maze columns, 1..200 (overrides the scene)"},
-    {"lumen-width", "W", "channel width in m (overrides the scene)"},
+    {"lumen-width", "W", "channel width in m (overrides the scene): wider than the rod (2 x /rod/outer_radius), at most the cell pitch"},
     {"solver", "NAME", "wall_follower or bfs (overrides the scene)"},
     {"corner-radius", "R", "path corner rounding radius in m (overrides the scene)"},
     {"speed", "V", "tip reference speed in m/s, for the trajectory duration (overrides the scene)"},
