@@ -171,26 +171,69 @@ TEST(Advance, ARodPulledBackFurtherThanItsRootHasRoomSlidesOutAlongTheIntroducer
 // the run blows up. The steps just before, though converged, gave the drive's reaction as NaN,
 // and the summary's feed_force_mean came out null: the run must stop at that step instead, say
 // why, and keep its statistics finite.
-TEST(Advance, PushingABlockedRodStopsWithAClearMessageAndFiniteFeedStatistics) {
-  const char* blocked = R"({
+// The drive's grip (nodes 0 and 1) moves with the feed and nothing stops it at a wall: a feed
+// longer than the way to a dead end takes the rod's root into the cap, where a held node has no
+// finite wall force (such a run stopped with a NaN drive force, its summary with none). The
+// scene is refused where the grip would arrive. Reference: the vessel is a round-capped tube of
+// radius 6 mm ending at x = 0.16 m, so the cap's far point is at x = 0.166 m; the rod (0.3 m,
+// 40 nodes, radius 1 mm) lies straight behind the start at x = 0.1, node 1 at 0.1 - 0.3 + 0.3/39;
+// it touches the cap when x1 + s + 0.001 = 0.166.
+TEST(Advance, AFeedThatWouldTakeTheDrivesGripIntoAWallIsRefusedWhereItWouldArrive) {
+  const std::string blocked = R"({
     "name": "blocked",
     "vessels": {"nodes": {"in": [0.1, 0.5], "end": [0.16, 0.5]}, "segments": [{"from": "in", "to": "end", "radius": 0.006}],
                 "start": "in", "goal": "end"},
     "rod": {"nodes": 40, "length": 0.3, "outer_radius": 0.001, "inner_radius": 0.0005},
     "loads": {"drag": {"enabled": true, "area": "nodes"}, "damping": {"enabled": true, "coefficient": 0.05}},
     "control": {"mode": "none", "disturbance": {"amplitude": 0}, "advance": {"speed": 0.5, "start": 0, "stop": 1}},
-    "run": {"duration": 1, "output_interval": 0.03333333333333333}
+    "run": {"duration": DURATION, "output_interval": 0.03333333333333333}
   })";
-  vascsim::Run run(compile(read_scene_text(blocked, "blocked.json")));
+  auto with_duration = [&](const char* duration) {
+    std::string text = blocked;
+    return text.replace(text.find("DURATION"), 8, duration);
+  };
+  const double node1 = 0.1 - 0.3 + 0.3 / 39, arrival = 0.166 - 0.001 - node1;  // m of feed
+  try {
+    compile(read_scene_text(with_duration("1"), "blocked.json"));
+    ADD_FAILURE() << "a feed of 0.5 m into a 0.06 m dead end was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("blocked.json: /control/advance: "), std::string::npos) << what;
+    const std::size_t at = what.find("at a fed length of ");
+    ASSERT_NE(at, std::string::npos) << what;
+    // Within the lumen's polygon's chord error and the walk's last probe.
+    EXPECT_NEAR(std::stod(what.substr(at + 19)), arrival, 1e-3) << what;
+  }
+  // The feed is checked as far as the run goes: stopped before the grip arrives, it is fine.
+  char before[32];
+  std::snprintf(before, sizeof before, "%.6f", (arrival - 0.005) / 0.5);
+  EXPECT_NO_THROW(compile(read_scene_text(with_duration(before), "blocked.json")));
+}
+
+// Any held node a scene drives into a wall stops the run there, naming the node: its wall force
+// is outside the residual Newton solves, so the step converged with it non-finite, unseen. The
+// tip is pushed sideways at 0.1 m/s from the centre of a vessel of radius 6 mm: its 1 mm radius
+// reaches the wall after 0.05 s.
+TEST(Advance, ANodeDrivenIntoAWallStopsTheRunNamingTheNode) {
+  const char* pushed = R"({
+    "name": "pushed",
+    "vessels": {"nodes": {"in": [0.1, 0.5], "end": [0.3, 0.5]}, "segments": [{"from": "in", "to": "end", "radius": 0.006}],
+                "start": "in", "goal": "end"},
+    "rod": {"nodes": 20, "length": 0.1, "outer_radius": 0.001, "inner_radius": 0.0005},
+    "boundary": {"prescribed": [{"node": -1, "velocity": [0, 0.1]}]},
+    "control": {"mode": "none", "disturbance": {"amplitude": 0}},
+    "run": {"duration": 0.2, "output_interval": 0.01}
+  })";
+  vascsim::Run run(compile(read_scene_text(pushed, "pushed.json")));
   Frames frames;
-  ASSERT_FALSE(run.run(frames)) << "the blocked rod was expected to buckle until the run stops";
+  ASSERT_FALSE(run.run(frames)) << "the tip was driven through the wall";
   const RunStatistics& s = run.statistics();
-  EXPECT_NE(s.failure.find("control.advance"), std::string::npos) << s.failure;
-  EXPECT_TRUE(std::isfinite(s.feed_force_max));
-  EXPECT_TRUE(std::isfinite(s.feed_force_mean)) << s.failure;
-  // Every frame before the failure is kept: the last one is within an output interval of it.
+  EXPECT_NE(s.failure.find("the force holding node 19 is not finite"), std::string::npos) << s.failure;
+  EXPECT_NE(s.failure.find("inside a wall"), std::string::npos) << s.failure;
+  EXPECT_NEAR(s.simulated_time, 0.05, 0.002) << s.failure;
+  // Every frame before the failure is kept.
   ASSERT_FALSE(frames.times.empty());
-  EXPECT_GT(frames.times.back(), s.simulated_time - 0.0334) << s.failure;
+  EXPECT_GT(frames.times.back(), s.simulated_time - 0.0101);
 }
 
 TEST(Advance, ProfilesAndErrors) {

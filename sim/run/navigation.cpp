@@ -18,6 +18,45 @@ namespace {
 
 std::string label_of(const Scene& scene) { return scene.file.empty() ? std::string("built-in scene") : scene.file; }
 
+// The drive moves its grip on the rod (nodes 0 and 1, held) straight along the inlet, and nothing
+// stops it at a wall: a held node inside one has no finite wall force (a feed on past a dead end
+// once the whole rod is in takes the grip there). Walks the grip along the fed lengths the run reaches, each probe as far on as the gap
+// lets it (a gap changes no faster than the grip moves), and refuses the first probe in a wall.
+void refuse_a_feed_into_a_wall(const Scene& scene, const Navigation& nav, const Model& model) {
+  const AdvanceSpec& feed = scene.control.advance;
+  double shortest = feed.fed_length(scene.run.duration), longest = shortest;  // m
+  for (const auto& [t, s] : feed.points)
+    if (t <= scene.run.duration) {
+      shortest = std::min(shortest, s);
+      longest = std::max(longest, s);
+    }
+  const double radius = model.rod.outer_radius;
+  const Vec2 inward = nav.environment.inlet.inward;
+  const Eigen::Vector4d grip = model.rod.x_initial.head<4>();
+  for (const double end : {longest, shortest})
+    for (double s = 0.0;;) {
+      Eigen::VectorXd x = grip;
+      x.segment<2>(0) += s * inward;
+      x.segment<2>(2) += s * inward;
+      const double gap = nav.contact_geometry->min_gap(x, 4.0 * radius);
+      if (gap <= 0.0) {
+        char text[400];
+        std::snprintf(text, sizeof text,
+                      ": /control/advance: the drive holds the rod's root (nodes 0 and 1) and moves it along the "
+                      "inlet; at a fed length of %.4g m (the run feeds %.4g to %.4g m) the root reaches a wall (the rod "
+                      "is %g m long): feed less, or make the run shorter",
+                      s, shortest, longest, scene.rod.length);
+        throw InputError(label_of(scene) + text);
+      }
+      if (s == end) break;
+      // Never a probe shorter than 1 % of the rod's radius (a grip along a wall would take
+      // forever): a wall is at least 2 radii deep to the grip, so only a grazing touch is missed,
+      // which Newton then reports as a held node inside a wall.
+      const double probe = std::max(std::min(gap, 4.0 * radius), 1e-2 * radius);
+      s = end > 0.0 ? std::min(end, s + probe) : std::max(end, s - probe);
+    }
+}
+
 // A rod that cannot fit the lumen, or that the entry leaves inside a wall, would blow up at the
 // first step ("the residual is not finite"): say what does not fit instead.
 void refuse_what_does_not_fit(const Scene& scene, const Navigation& nav, const Model& model) {
@@ -59,6 +98,7 @@ void refuse_what_does_not_fit(const Scene& scene, const Navigation& nav, const M
                   -1e3 * gap, scene.rod.length);
     throw InputError(label_of(scene) + text);
   }
+  if (scene.control.advance.enabled()) refuse_a_feed_into_a_wall(scene, nav, model);
 }
 
 // The maze's own environment, then its route, then the port cut into it along the route's first leg.

@@ -134,19 +134,6 @@ bool Run::attempt(double dt, Controls& controls, StepReport& report) {
     stats_.failure = text;
     return false;
   }
-  // The drive's reaction is outside the residual Newton drives to zero, so a step can converge
-  // with it non-finite: the rod's root pushed into what it cannot move (a blocked, buckling rod
-  // on its way to blowing up). Stop here, not with a NaN feed force in summary.json.
-  if (navigation_ && scene_.control.advance.enabled() && !std::isfinite(feed_force())) {
-    stats_.failed = true;
-    char text[240];
-    std::snprintf(text, sizeof text,
-                  "at t = %.9g s the drive's force on the rod is not finite: control.advance pushes the rod's root "
-                  "harder than the rod can move (blocked or buckling; feed slower or stop sooner)",
-                  state_.t);
-    stats_.failure = text;
-    return false;
-  }
   if (report.round_off_stop) stats_.warnings.newton_round_off.note(t_start);
   if (report.unresolved) stats_.warnings.unresolved_step.note(t_start);
   return true;

@@ -163,6 +163,15 @@ NewtonOutcome newton_solve(const Model& model, const NewtonProblem& p, Workspace
       out.failure = "the residual is not finite (the rod blew up)";
       return out;
     }
+    // A held node's force is outside the residual, so a node driven into a wall (a prescribed
+    // boundary motion, a kinematic tip's offset) would converge with it non-finite, unseen.
+    if (!ws.reaction.allFinite()) {
+      Eigen::Index d = 0;
+      while (std::isfinite(ws.reaction[d])) ++d;
+      out.failure = format("the force holding node %.0f is not finite: a node the scene moves (boundary.prescribed, "
+                           "control.advance, a kinematic tip) is inside a wall", static_cast<double>(d / 2));
+      return out;
+    }
     if (rinf <= s.rel_tol * scale || rinf <= s.abs_tol) {
       out.converged = true;
       return out;
