@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace vascsim::io {
 
@@ -11,7 +12,10 @@ std::optional<double> parse_decimal(const std::string& text) {
   char* end = nullptr;
   errno = 0;
   const double x = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || errno != 0 || !std::isfinite(x)) return std::nullopt;
+  if (end != text.c_str() + text.size() || !std::isfinite(x)) return std::nullopt;
+  // Underflow reads as the nearest double (0 or subnormal), as a scene file's JSON number does;
+  // a range check refuses it where the value must be positive. Overflow stays refused.
+  if (errno == ERANGE && std::abs(x) > std::numeric_limits<double>::min()) return std::nullopt;
   return x;
 }
 

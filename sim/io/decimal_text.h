@@ -10,7 +10,7 @@
 namespace vascsim::io {
 
 // The finite number the whole of `text` spells in decimal (at most 64 characters; not one that
-// overflows or underflows a double), or nothing.
+// overflows a double; one that underflows reads as the nearest double, 0 or subnormal), or nothing.
 std::optional<double> parse_decimal(const std::string& text);
 // The integer the whole of `text` spells in decimal digits after an optional sign (no spaces),
 // or nothing if it does not or is out of the range of long long.
