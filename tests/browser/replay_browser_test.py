@@ -148,7 +148,15 @@ class Server:
         for line in self.proc.stdout:
             self.extra.append(line)
 
-    def stop(self, what):
+    def stop(self, what, driver=None):
+        # The page is closed first, as a user closes the tab: left open, it goes on asking the
+        # stopped server (the series it refetches), and those refusals would land in the next
+        # section's browser log.
+        if driver:
+            try:
+                driver.get('about:blank')
+            except WebDriverException:
+                pass
         self.proc.send_signal(signal.SIGINT)
         try:
             code = self.proc.wait(timeout=15)
@@ -816,7 +824,7 @@ def check_live(driver, exe, run, shots, workdir):
         stop.set()
         if writer:
             writer.join(timeout=10)
-        server.stop('live')
+        server.stop('live', driver)
 
 # ---------------------------------------------------------------------------- main
 def main():
@@ -866,7 +874,7 @@ def main():
             R.check(not page.severe, 'no JS errors in the browser log (single run)', '; '.join(page.severe[:5]))
             page.severe.clear()
             if server:
-                server.stop('single run')
+                server.stop('single run', driver)
                 server = None
             if not args.url:
                 section('live follow', check_live, driver, args.vascsim, args.run, args.screenshots, workdir)
@@ -881,14 +889,14 @@ def main():
                 page_b.collect_log()
                 R.check(not page_b.severe, 'no JS errors in the browser log (compare)', '; '.join(page_b.severe[:5]))
                 if server:
-                    server.stop('compare')
+                    server.stop('compare', driver)
                     server = None
                 if args.run_c and not args.url:
                     server = Server(args.vascsim, [args.run, args.run_c])
                     page_c = Page(driver, Api(server.url))
                     section('overlay of a run in another environment', check_other_environment, page_c, args.screenshots)
                     R.check(not page_c.severe, 'no JS errors in the browser log (other environment)', '; '.join(page_c.severe[:5]))
-                    server.stop('other environment')
+                    server.stop('other environment', driver)
                     server = None
             else:
                 R.skip('compare mode', 'no --run-b / --url-b')
