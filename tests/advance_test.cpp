@@ -167,10 +167,6 @@ TEST(Advance, ARodPulledBackFurtherThanItsRootHasRoomSlidesOutAlongTheIntroducer
   EXPECT_NEAR(frames.values.back()[tip_x + 1], frames.values.front()[tip_x + 1], 1e-9);
 }
 
-// A drive that keeps pushing a rod whose tip is stopped by a closed vessel's end buckles it until
-// the run blows up. The steps just before, though converged, gave the drive's reaction as NaN,
-// and the summary's feed_force_mean came out null: the run must stop at that step instead, say
-// why, and keep its statistics finite.
 // The drive's grip (nodes 0 and 1) moves with the feed and nothing stops it at a wall: a feed
 // longer than the way to a dead end takes the rod's root into the cap, where a held node has no
 // finite wall force (such a run stopped with a NaN drive force, its summary with none). The
@@ -214,7 +210,7 @@ TEST(Advance, AFeedThatWouldTakeTheDrivesGripIntoAWallIsRefusedWhereItWouldArriv
 // is outside the residual Newton solves, so the step converged with it non-finite, unseen. The
 // tip is pushed sideways at 0.1 m/s from the centre of a vessel of radius 6 mm: its 1 mm radius
 // reaches the wall after 0.05 s.
-TEST(Advance, ANodeDrivenIntoAWallStopsTheRunNamingTheNode) {
+TEST(HeldNode, DrivenIntoAWallStopsTheRunNamingIt) {
   const char* pushed = R"({
     "name": "pushed",
     "vessels": {"nodes": {"in": [0.1, 0.5], "end": [0.3, 0.5]}, "segments": [{"from": "in", "to": "end", "radius": 0.006}],
