@@ -1,6 +1,7 @@
-// `vascsim export RUN_DIR --csv DIR` through the executable: the chosen channels, times and
-// decimation, one row per frame and node, the units in the header; an unknown channel and an
-// existing file without --force are refused with exit 2 and nothing replaced.
+// `vascsim export RUN_DIR --csv DIR` through the executable: DIR created if missing, the chosen
+// channels, times and decimation, one row per frame and node, the units in the header; an
+// unknown channel and an existing file without --force are refused with exit 2 and nothing
+// replaced or created.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -23,7 +24,13 @@ TEST(ExportCommand, WritesChosenChannelsTimesAndFrames) {
   const std::string dir = fresh_temp_dir("export");
   CommandResult r = run_vascsim("run " + source_path("scenes/bifurcation.json") + " --out " + dir + "/run --duration 1 --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  std::filesystem::create_directory(dir + "/csv");
+  // A refused export leaves no directory behind; a good one creates it, with its parents.
+  r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv/sub --channels tip/speed");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/csv"));
+  r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv/sub --channels tip/error");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/csv/sub/tip_error.csv"));
   // 0.02 s frames: 0.5..0.9 s holds 21 frames; every 5th keeps 0.5, 0.6, 0.7, 0.8, 0.9.
   r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv --channels position,tip/error --from 0.5 --to 0.9 --every 5");
   ASSERT_EQ(r.exit_code, 0) << r.output;

@@ -14,7 +14,7 @@ namespace vascsim::cli {
 namespace {
 
 const std::vector<OptionSpec> kOptions = {
-    {"csv", "DIR", "write one CSV per channel into DIR (required; it must exist)"},
+    {"csv", "DIR", "write one CSV per channel into DIR (required; created if missing)"},
     {"channels", kListValue, "only these channels (default: all; names as in docs/frame-log.md)"},
     {"from", "T0", "first time in s (default: the first frame)"},
     {"to", "T1", "last time in s (default: the last frame)"},

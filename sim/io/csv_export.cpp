@@ -54,7 +54,8 @@ std::vector<std::string> export_csv(const FrameLogReader& log, const std::string
       chosen.push_back(static_cast<std::size_t>(it - channels.begin()));
     }
   }
-  if (!std::filesystem::is_directory(dir)) throw InputError(dir + ": not a directory (create it first)");
+  const bool dir_exists = std::filesystem::exists(dir);
+  if (dir_exists && !std::filesystem::is_directory(dir)) throw InputError(dir + ": not a directory");
   std::vector<std::string> paths;
   std::map<std::string, std::string> channel_of_file;  // refused before any file is written
   for (std::size_t i : chosen) {
@@ -64,7 +65,7 @@ std::vector<std::string> export_csv(const FrameLogReader& log, const std::string
       throw InputError(log.path() + ": channels \"" + it->second + "\" and \"" + channels[i].name + "\" would both be written to " +
                        file + " ('/' becomes '_'): export them one at a time (--channels) into different directories");
     paths.push_back((std::filesystem::path(dir) / file).string());
-    check_replaceable_output(paths.back(), options.overwrite, {log.path()});
+    if (dir_exists) check_replaceable_output(paths.back(), options.overwrite, {log.path()});  // else nothing to replace
   }
 
   // The frames kept: by time, then every k-th. Every frame's time is checked on the way, so a
@@ -88,6 +89,10 @@ std::vector<std::string> export_csv(const FrameLogReader& log, const std::string
   std::vector<std::size_t> offset(channels.size(), 1);  // in doubles, after the time
   for (std::size_t i = 1; i < channels.size(); ++i) offset[i] = offset[i - 1] + channels[i - 1].count;
   std::vector<double> values;
+  // Created (with its parents) only now, so that input refused above leaves nothing behind.
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir + ": cannot create the directory (" + ec.message() + ")");
   OutputFileSet files;  // all of them or none: a failed export leaves no half of itself
   for (std::size_t k = 0; k < chosen.size(); ++k) {
     const LogChannel& c = channels[chosen[k]];

@@ -21,7 +21,7 @@ struct CsvExportOptions {
 // ("force/contact" -> "force_contact.csv").
 std::string csv_file_name(const std::string& channel);
 
-// Writes DIR/<channel>.csv for the chosen channels of `log`:
+// Writes DIR/<channel>.csv for the chosen channels of `log` (DIR and its parents created if missing):
 //   node vectors: "time [s],node,x [unit],y [unit]", one row per frame and node;
 //   a vector:     "time [s],x [unit],y [unit]";
 //   scalars:      "time [s],value [unit]" (one value) or "time [s],index,value [unit]".
