@@ -1,6 +1,6 @@
 // Warnings are counted, not lost: conditions that did not stop a run (Newton stopping at
 // round-off, steps retried with a smaller dt, the paper contact's iteration cap, an unstable
-// static equilibrium) reach summary.json with how often and when they first happened, and stay
+// static equilibrium, a rod strained past 10 %) reach summary.json with how often and when they first happened, and stay
 // at zero where they did not happen.
 #include <gtest/gtest.h>
 
@@ -34,7 +34,7 @@ void expect_count(const nlohmann::json& w, const char* name, bool happened) {
 TEST(RunWarnings, NoneInAnOrdinaryRun) {
   const auto w = warnings_of(default_maze(1.0));
   for (const char* name : {"step_retried", "unresolved_step", "paper_contact_iteration_cap", "unstable_equilibrium", "left_unstable_equilibrium", "load_path_jumped",
-                           "stability_undecided"})
+                           "stability_undecided", "large_axial_strain"})
     expect_count(w, name, false);
 }
 
@@ -63,6 +63,23 @@ TEST(RunWarnings, PaperContactIterationCapIsCounted) {
   const auto w = warnings_of(paper);
   expect_count(w, "paper_contact_iteration_cap", true);
   EXPECT_GT(w["paper_contact_iteration_cap"]["first_time"].get<double>(), 15.0);
+}
+
+// Hooke's law: a rod clamped at one end and pulled along its axis at the other by F is strained
+// by F / EA on every free edge (EA = E pi (ro^2 - ri^2)). summary.json gives that strain; past
+// 10 % the run warns (a rod pushed or pulled harder than it bears).
+TEST(RunWarnings, LargeAxialStrainIsCountedAndItsSizeReported) {
+  for (const double strain : {0.05, 0.2}) {
+    Scene pulled = test::cantilever(21);
+    const RodSpec& r = pulled.rod;
+    const double ea = r.youngs_modulus * M_PI * (r.outer_radius * r.outer_radius - r.inner_radius * r.inner_radius);
+    PointLoadSpec tip;
+    tip.force = Vec2(strain * ea, 0.0);
+    pulled.loads.point_loads.push_back(tip);
+    const auto summary = summary_of(pulled);
+    EXPECT_NEAR(summary["axial_strain_max"].get<double>(), strain, 1e-6) << strain;
+    expect_count(summary["warnings"], "large_axial_strain", strain > 0.1);
+  }
 }
 
 // docs/references.md section 3 (Timoshenko & Gere): a clamped-free column stays straight under an

@@ -268,6 +268,13 @@ int run_run_command(int argc, char** argv) {
   warn("the static equilibrium's stability is not decided: the Newton matrix's eigenvalue nearest zero is within its "
        "round-off at this many nodes (docs/solver.md, \"Limit: static solves of very fine meshes\")",
        s.warnings.stability_undecided);
+  if (s.warnings.large_axial_strain.count > 0) {
+    char what[300];
+    std::snprintf(what, sizeof what, "an edge of the rod was stretched or squashed by more than %g %% of its rest length (up "
+                  "to %.3g %%: a drive or load stronger than the rod, past its linear stretching model) in a frame",
+                  100 * kLargeAxialStrain, 100 * s.axial_strain_max);
+    warn(what, s.warnings.large_axial_strain);
+  }
   if (!ok) {
     std::fprintf(stderr, "vascsim run: simulation failed: %s\n", s.failure.c_str());
     return 1;

@@ -51,6 +51,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                             {"max", s.newton_iterations_max},
                             {"all_attempts", s.newton_iterations_all}};
   j["frames"] = s.frames;
+  j["axial_strain_max"] = s.axial_strain_max;
   j["simulated_time"] = s.simulated_time;
   j["wall_time"] = s.wall_time;
   j["real_time_factor"] = s.wall_time > 0 && !is_static ? json(s.simulated_time / s.wall_time) : json(nullptr);
@@ -66,7 +67,8 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                    {"unstable_equilibrium", warning(s.warnings.unstable_equilibrium)},
                    {"left_unstable_equilibrium", warning(s.warnings.left_unstable)},
                    {"load_path_jumped", warning(s.warnings.load_path_jumped)},
-                   {"stability_undecided", warning(s.warnings.stability_undecided)}};
+                   {"stability_undecided", warning(s.warnings.stability_undecided)},
+                   {"large_axial_strain", warning(s.warnings.large_axial_strain)}};
   const State& state = run.state();
   json positions = json::array(), velocities = json::array();
   for (Eigen::Index i = 0; i < state.x.size(); i += 2) {

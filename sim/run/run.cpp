@@ -22,6 +22,13 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+double max_axial_strain(const RodModel& rod, const Eigen::VectorXd& x) {
+  double strain = 0.0;
+  for (Eigen::Index e = 0; e < rod.rest_length.size(); ++e)
+    strain = std::max(strain, std::abs((x.segment<2>(2 * e + 2) - x.segment<2>(2 * e)).norm() / rod.rest_length[e] - 1.0));
+  return strain;
+}
+
 }  // namespace
 
 Run::Run(std::shared_ptr<const Model> model)
@@ -373,6 +380,10 @@ void Run::record(FrameSink& sink, const State& frame) {
   }
   sink.write(frame.t, values);
   ++stats_.frames;
+  // Checked on the frames, not every step: the strain of a rod pushed too hard builds up slowly.
+  const double strain = max_axial_strain(model_->rod, frame.x);
+  stats_.axial_strain_max = std::max(stats_.axial_strain_max, strain);
+  if (strain > kLargeAxialStrain) stats_.warnings.large_axial_strain.note(frame.t);
 }
 
 bool Run::solve_equilibrium(FrameSink& sink) {

@@ -51,7 +51,13 @@ struct RunWarnings {
   WarningCount load_path_jumped;      // static mode: increments could not follow the stable branch and jumped
   WarningCount left_unstable;         // static mode: the load path's was, and the solve left it for a stable one
   WarningCount stability_undecided;   // static mode: the stiffness's eigenvalue nearest zero is within its round-off
+  WarningCount large_axial_strain;    // frames with an edge stretched or squashed past kLargeAxialStrain
 };
+
+// An edge's axial strain |l / l0 - 1| past which the rod is warned of: a drive or load stronger
+// than the rod (a catheter fed hard into a dead end was squashed to 40 % of its length), past
+// what its linear stretching model and a real catheter bear.
+constexpr double kLargeAxialStrain = 0.1;
 
 struct RunStatistics {
   int steps = 0;
@@ -68,6 +74,7 @@ struct RunStatistics {
   double dt_min = std::numeric_limits<double>::infinity();  // s, shortest step taken
   double dt_max = 0.0;               // s, longest step taken
   std::size_t frames = 0;
+  double axial_strain_max = 0.0;     // largest |l / l0 - 1| of an edge in a recorded frame
   double simulated_time = 0.0;       // s
   double wall_time = 0.0;            // s
   bool failed = false;
