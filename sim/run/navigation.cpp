@@ -20,8 +20,9 @@ std::string label_of(const Scene& scene) { return scene.file.empty() ? std::stri
 
 // The drive moves its grip on the rod (nodes 0 and 1, held) straight along the inlet, and nothing
 // stops it at a wall: a held node inside one has no finite wall force (a feed on past a dead end
-// once the whole rod is in takes the grip there). Walks the grip along the fed lengths the run reaches, each probe as far on as the gap
-// lets it (a gap changes no faster than the grip moves), and refuses the first probe in a wall.
+// once the whole rod is in takes the grip there). Walks the grip along the fed lengths the run
+// reaches, each probe as far on as the gap lets it (a gap changes no faster than the grip
+// moves), and refuses the first probe in a wall.
 void refuse_a_feed_into_a_wall(const Scene& scene, const Navigation& nav, const Model& model) {
   const AdvanceSpec& feed = scene.control.advance;
   double shortest = feed.fed_length(scene.run.duration), longest = shortest;  // m
