@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "sim/log/frame_log.h"
@@ -28,6 +29,14 @@ TEST(ExportCommand, WritesChosenChannelsTimesAndFrames) {
   r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv/sub --channels tip/speed");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/csv"));
+  // A destination that is a file, or under one, is refused naming it.
+  { std::ofstream(dir + "/a_file") << "x"; }
+  r = run_vascsim("export " + dir + "/run --csv " + dir + "/a_file --channels tip/error");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(dir + "/a_file: not a directory"), std::string::npos) << r.output;
+  r = run_vascsim("export " + dir + "/run --csv " + dir + "/a_file/sub --channels tip/error");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(dir + "/a_file/sub: cannot create the directory"), std::string::npos) << r.output;
   r = run_vascsim("export " + dir + "/run --csv " + dir + "/csv/sub --channels tip/error");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(std::filesystem::exists(dir + "/csv/sub/tip_error.csv"));
