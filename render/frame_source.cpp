@@ -148,4 +148,20 @@ void FrameSource::at_time(double t, FrameState& out) const {
   out.time = t;
 }
 
+void FrameSource::record_at_time(double t, std::vector<double>& out) const {
+  t = std::clamp(t, first_time_, last_time_);
+  const std::size_t i = frame_at_time(t);
+  record(i, out);
+  if (!std::isfinite(out[0]) || out[0] < 0) throw bad_time(i, out[0], "not a finite time >= 0");
+  if (i + 1 >= frame_count_ || t <= out[0]) return;
+  std::vector<double> next;
+  record(i + 1, next);
+  if (!(next[0] >= out[0])) throw bad_time(i + 1, next[0], "before the previous frame's time");
+  const double span = next[0] - out[0];
+  if (span <= 0) return;
+  const double w = std::clamp((t - out[0]) / span, 0.0, 1.0);
+  for (std::size_t k = 1; k < out.size() && k < next.size(); ++k) out[k] += w * (next[k] - out[k]);
+  out[0] = t;
+}
+
 }  // namespace vascsim::render

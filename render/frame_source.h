@@ -58,6 +58,10 @@ class FrameSource {
   void frame(std::size_t i, FrameState& out) const;
   // The state at time t (s), clamped to the logged range and interpolated between frames.
   void at_time(double t, FrameState& out) const;
+  // The raw record (as record()) at time t: t clamped to the logged range, every value blended
+  // between the two frames around it with at_time's weight, so a value reduced from it (a
+  // plot's readout at the cursor) is what the picture of that time shows. out[0] is the time.
+  void record_at_time(double t, std::vector<double>& out) const;
   // Index of the last logged frame with time <= t.
   std::size_t frame_at_time(double t) const { return reader_.frame_at_time(t); }
   double time_of(std::size_t i) const { return reader_.time_of(i); }

@@ -87,7 +87,7 @@ TEST(ReplayRobustness, SurvivesTenThousandRandomQueryStrings) {
   ScratchDir dir("replay_fuzz");
   LiveServer s({{small_run(dir)}});
   std::mt19937 rng(12345);
-  const std::string endpoints[] = {"/api/run", "/api/frame.png", "/api/nodes", "/api/series", "/api/events",
+  const std::string endpoints[] = {"/api/run", "/api/frame.png", "/api/nodes", "/api/series", "/api/value", "/api/events",
                                    "/api/compare", "/api/bookmarks", "/api/export/status", "/api/export/file", "/x"};
   const std::string names[] = {"t", "width", "height", "camera", "zoom", "center", "layers", "run", "channel",
                                "reduce", "from", "to", "points", "id", "overlay", "token", ""};

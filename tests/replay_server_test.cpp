@@ -4,7 +4,9 @@
 // runs by simulated time, and reads node values from the log.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -203,6 +205,10 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
       {"/api/series?channel=force/contact&reduce=median", "reduce"},
       {"/api/series?channel=tip/error&points=0", "points"},
       {"/api/series?channel=tip/error&from=2&to=1", "to"},
+      {"/api/value", "channel"},
+      {"/api/value?channel=nope&t=1", "channel"},
+      {"/api/value?channel=force/contact&reduce=median&t=1", "reduce"},
+      {"/api/value?channel=tip/error&t=x", "t"},
       {"/api/compare?t=1", "run"},
       {"/api/export/status?id=99", "id"},
       {"/api/export/status?id=abc", "id"},
@@ -291,6 +297,43 @@ TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
   // The reduction is named as asked (a vector channel's default said "value", which no request can give).
   EXPECT_EQ(get_json(s, "/api/series?channel=tip/reference&points=3")["reduce"], "max");
   EXPECT_EQ(get_json(s, "/api/series?channel=tip/reference&points=3&reduce=x")["reduce"], "x");
+}
+
+// A plot's readout at the time cursor is the value the map's frame of that time shows: the
+// renderer's state at t (blended between frames, clamped to the run's range), reduced as the
+// HUD reduces it. The page read it from /api/series before, as the largest value of the bucket
+// around t, which the HUD did not show wherever a bucket held several frames.
+TEST(ReplayServer, ValueAtATimeIsWhatTheFrameOfThatTimeShows) {
+  ScratchDir dir("replay_value");
+  const std::string run = synthetic_run(dir, "run", long_spec());
+  LiveServer s({{run}});
+  render::FrameSource source(run);
+  render::FrameState state;
+  const double between = source.time_of(42) + 0.37 * (source.time_of(43) - source.time_of(42));
+  for (const double t : {source.time_of(42), between, -1.0, 1e6}) {
+    source.at_time(t, state);
+    char at[40];
+    std::snprintf(at, sizeof at, "&t=%.17g", t);
+    const json contact = get_json(s, std::string("/api/value?channel=force/contact&reduce=max") + at);
+    const json magnetic = get_json(s, std::string("/api/value?channel=force/actuation&reduce=sum") + at);
+    const json error = get_json(s, std::string("/api/value?channel=tip/error") + at);
+    const json x = get_json(s, std::string("/api/value?channel=tip/reference&reduce=x") + at);
+    const json y = get_json(s, std::string("/api/value?channel=tip/reference&reduce=y") + at);
+    EXPECT_DOUBLE_EQ(contact["time"].get<double>(), std::clamp(t, source.first_time(), source.last_time())) << t;
+    EXPECT_NEAR(contact["value"].get<double>(), state.max_contact(), 1e-12 * state.max_contact()) << t;
+    EXPECT_NEAR(magnetic["value"].get<double>(), state.actuation_total().norm(), 1e-12 * state.actuation_total().norm()) << t;
+    EXPECT_NEAR(error["value"].get<double>(), state.tip_error, 1e-12 * state.tip_error) << t;
+    EXPECT_NEAR(x["value"].get<double>(), state.reference.x(), 1e-12) << t;
+    EXPECT_NEAR(y["value"].get<double>(), state.reference.y(), 1e-12) << t;
+    EXPECT_EQ(contact["unit"], "N");
+    EXPECT_EQ(contact["reduce"], "max");
+  }
+  // Between frames the value is blended, not a neighbour's: the reference moves, so the test
+  // above can tell them apart (the synthetic forces and tip error keep their sizes).
+  source.frame(42, state);
+  const Vec2 at_42 = state.reference;
+  source.frame(43, state);
+  ASSERT_GT((at_42 - state.reference).norm(), 1e-5);
 }
 
 // A log that a run is still writing: the server sees appended frames, then the summary.

@@ -137,6 +137,13 @@ json ReplayRun::nodes(double t) const {
   return {{"run", id_}, {"time", r[0]}, {"frame", i}, {"nodes", nodes}};
 }
 
+std::pair<double, double> ReplayRun::value_at(int channel, SeriesReduce reduce, double t) const {
+  std::vector<double> r;
+  source_->record_at_time(t, r);
+  const FrameLogHeader& h = source_->header();
+  return {r[0], reduce_values(&r[h.channel_offset(channel)], h.channels[static_cast<std::size_t>(channel)], reduce)};
+}
+
 template <class Visit>
 void ReplayRun::scan(std::size_t first, Visit visit) const {
   const FrameLogHeader& h = source_->header();

@@ -43,6 +43,9 @@ class ReplayRun {
   nlohmann::json info() const;
   // GET /api/nodes: the logged frame nearest to t.
   nlohmann::json nodes(double t) const;
+  // GET /api/value: one channel reduced at time t as the map shows that time (clamped to the
+  // run's range, blended between frames; see FrameSource::record_at_time). {time (s), value}.
+  std::pair<double, double> value_at(int channel, SeriesReduce reduce, double t) const;
 
   // Time and tip of every logged frame so far.
   const std::vector<double>& times();

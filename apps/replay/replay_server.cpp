@@ -303,37 +303,65 @@ struct ReplayServer::Impl {
     send_json(res, run.nodes(time_of(p, run)));
   }
 
+  // The `channel` and `reduce` parameters of /api/series and /api/value.
+  struct ChannelAsked {
+    int index;
+    const LogChannel* channel;
+    SeriesReduce reduce;
+    std::string reduce_asked;  // as asked: "value" is no name a request can give
+  };
+  static ChannelAsked channel_asked(const RequestParams& p, const ReplayRun& run) {
+    const auto name = p.text("channel");
+    if (!name) throw ParamError("channel", "required: a channel name from /api/run");
+    const FrameLogHeader& h = run.source().header();
+    const int index = h.find_channel(*name);
+    if (index < 0)
+      throw ParamError("channel", "no channel '" + name->substr(0, 64) + "' in this run (see /api/run)");
+    ChannelAsked asked{index, &h.channels[static_cast<std::size_t>(index)], SeriesReduce::kMax,
+                       p.text("reduce").value_or("max")};
+    try {
+      asked.reduce = reduce_for(*asked.channel, asked.reduce_asked);
+    } catch (const std::invalid_argument& e) {
+      throw ParamError("reduce", e.what());
+    }
+    return asked;
+  }
+
   void series(const httplib::Request& req, httplib::Response& res) {
     const RequestParams p(query_of(req));
     std::lock_guard<std::mutex> lock(data_mutex);
     ReplayRun& run = run_of(p);
     run.refresh();
-    const auto name = p.text("channel");
-    if (!name) throw ParamError("channel", "required: a channel name from /api/run");
-    const FrameLogHeader& h = run.source().header();
-    const int channel = h.find_channel(*name);
-    if (channel < 0)
-      throw ParamError("channel", "no channel '" + name->substr(0, 64) + "' in this run (see /api/run)");
-    const LogChannel& c = h.channels[static_cast<std::size_t>(channel)];
-    SeriesReduce reduce;
-    const std::string reduce_asked = p.text("reduce").value_or("max");
-    try {
-      reduce = reduce_for(c, reduce_asked);
-    } catch (const std::invalid_argument& e) {
-      throw ParamError("reduce", e.what());
-    }
+    const ChannelAsked c = channel_asked(p, run);
     const double from = p.number("from", run.source().first_time(), -1e12, 1e12);
     const double to = p.number("to", run.source().last_time(), -1e12, 1e12);
     if (to < from) throw ParamError("to", "must not be before from");
     const int points = static_cast<int>(p.integer("points", 1000, 1, 10000));
-    const DecimatedSeries d = decimate_min_max(run.times(), run.series(channel, reduce), from, to, points);
+    const DecimatedSeries d = decimate_min_max(run.times(), run.series(c.index, c.reduce), from, to, points);
     send_json(res, {{"run", run.id()},
-                    {"channel", c.name},
-                    {"unit", c.unit},
-                    {"reduce", reduce_asked},  // as asked: "value" is no name a request can give
+                    {"channel", c.channel->name},
+                    {"unit", c.channel->unit},
+                    {"reduce", c.reduce_asked},
                     {"t", d.t},
                     {"min", d.min},
                     {"max", d.max}});
+  }
+
+  // A plot's readout at the time cursor: the value the map's frame of that time shows, where
+  // /api/series gives a bucket's extremes.
+  void value(const httplib::Request& req, httplib::Response& res) {
+    const RequestParams p(query_of(req));
+    std::lock_guard<std::mutex> lock(data_mutex);
+    ReplayRun& run = run_of(p);
+    run.refresh();
+    const ChannelAsked c = channel_asked(p, run);
+    const auto [time, value] = run.value_at(c.index, c.reduce, time_of(p, run));
+    send_json(res, {{"run", run.id()},
+                    {"channel", c.channel->name},
+                    {"unit", c.channel->unit},
+                    {"reduce", c.reduce_asked},
+                    {"time", time},
+                    {"value", std::isfinite(value) ? json(value) : json(nullptr)}});
   }
 
   // First and last frame of each wall-contact episode, the goal and a failure.
@@ -605,6 +633,7 @@ struct ReplayServer::Impl {
     get("/api/frame.png", wrap(&Impl::frame, with(view, {"t"})));
     get("/api/nodes", wrap(&Impl::nodes, {"run", "t"}));
     get("/api/series", wrap(&Impl::series, {"run", "channel", "reduce", "from", "to", "points"}));
+    get("/api/value", wrap(&Impl::value, {"run", "channel", "reduce", "t"}));
     get("/api/events", wrap(&Impl::events, {"run"}));
     get("/api/compare", wrap(&Impl::compare, {"t"}));
     get("/api/bookmarks", wrap(&Impl::get_bookmarks, {"run"}));

@@ -91,6 +91,15 @@ void bench_scrub(std::string run, const fs::path& dir, int requests) {
         throw InputError("bench replay: a frame request failed");
       scrub.push_back(ms_since(start));
     }
+    // The page's plot readouts at each cursor move: one /api/value per default plot.
+    std::vector<double> readouts;
+    for (int k = 0; k < requests; ++k) {
+      const std::string t = std::to_string(any(rng));
+      const auto start = Clock::now();
+      for (const char* plot : {"channel=tip/error", "channel=force/actuation&reduce=sum", "channel=force/contact&reduce=max"})
+        if (s.get(std::string("/api/value?") + plot + "&t=" + t) != 200) throw InputError("bench replay: a value request failed");
+      readouts.push_back(ms_since(start));
+    }
     // Playback: consecutive times 1/30 s apart, each requested when the last arrived.
     const auto play_start = Clock::now();
     for (int k = 0; k < requests; ++k) {
@@ -104,6 +113,8 @@ void bench_scrub(std::string run, const fs::path& dir, int requests) {
                 percentile(scrub, 0.95), percentile(scrub, 1.0));
     std::printf("  playback (consecutive): p50 %.1f ms   p95 %.1f ms   -> %.1f frames/s\n", percentile(play, 0.5),
                 percentile(play, 0.95), requests / play_s);
+    std::printf("  plot readouts (3 x /api/value at a random time): p50 %.2f ms   p95 %.2f ms\n",
+                percentile(readouts, 0.5), percentile(readouts, 0.95));
   }
 
 }

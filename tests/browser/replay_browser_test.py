@@ -339,6 +339,76 @@ def check_keys(page):
             'Left steps back onto a logged frame', f't = {t}')
 
 
+UNIT_FACTORS = {'N': 1.0, 'mN': 1e-3, 'µN': 1e-6, 'm': 1.0, 'mm': 1e-3, 'µm': 1e-6}
+
+
+def plot_readout(page, label, t):
+    """The values a plot's title row shows at time t, in SI: {run: value} ('a' when one run)."""
+    want = f'{label} at {t:.3f} s: '
+    text = page.wait(lambda d: d.execute_script(
+        'for (const c of document.querySelectorAll("#plot-list canvas")) {'
+        ' const l = c.getAttribute("aria-label") || ""; if (l.startsWith(arguments[0])) return l; }'
+        ' return false;', want), f'the {label} plot to read out at {t:.3f} s')
+    values = {}
+    for part in text[len(want):].split(', '):
+        m = re.fullmatch(r'(?:([AB]) )?(-?[\d.]+(?:e[-+]?\d+)?) (\S+)', part)
+        if not m or m.group(3) not in UNIT_FACTORS:
+            raise CheckFailed(f'the {label} plot reads {text!r}, not values with units')
+        values[(m.group(1) or 'A').lower()] = float(m.group(2)) * UNIT_FACTORS[m.group(3)]
+    return values, text
+
+
+def check_plot_readouts(page, runs, what):
+    """The plots' readouts at the cursor are the frame's values (as the map's HUD shows them),
+    not the extremes of a pixel column's bucket, checked against node forces from /api/nodes at
+    consecutive logged frames (a column holds several, so a bucket's extreme differs in some);
+    a click on a plot seeks to the time under it."""
+    info = page.api.get('/api/run', run='a')
+    first, dt = info['first_time'], info['output_interval']
+    # From the first wall contact on, so the contact readout is not 0 all along.
+    touches = [e['t'] for e in page.api.get('/api/events', run='a')['events'] if e['kind'] == 'contact_start']
+    if not touches:
+        raise CheckFailed('run a never touches a wall: no contact force to read out')
+    start = round((touches[0] - first) / dt)
+    page.js('window.vascsimReplay.setTime(arguments[0])', first + start * dt)
+    touching = 0
+    for k in range(start, start + 6):
+        if k > start:
+            page.keys(Keys.ARROW_RIGHT)
+        t = first + k * dt
+        page.wait(lambda d: close(page.state()['t'], t, 1e-9), f'frame {k}')
+        magnetic, magnetic_text = plot_readout(page, 'magnetic force', t)
+        contact, contact_text = plot_readout(page, 'largest contact force', t)
+        for r in runs:
+            nodes = page.api.get('/api/nodes', t=repr(t), run=r)
+            R.check(close(nodes['time'], t, 1e-9), f'{what}: run {r} has a frame at {t:.3f} s', f"{nodes['time']}")
+            fx = sum(n['forces']['force/actuation'][0] for n in nodes['nodes'])
+            fy = sum(n['forces']['force/actuation'][1] for n in nodes['nodes'])
+            want_magnetic = math.hypot(fx, fy)
+            want_contact = max(math.hypot(*n['forces']['force/contact']) for n in nodes['nodes'])
+            touching += want_contact > 0
+            # 4 significant digits are shown.
+            R.check(r in magnetic and abs(magnetic[r] - want_magnetic) <= 5e-4 * want_magnetic + 1e-12,
+                    f'{what}: run {r} magnetic force readout at {t:.3f} s is |sum of force/actuation| of the frame',
+                    f'{magnetic_text!r} vs {want_magnetic:.6g} N')
+            R.check(r in contact and abs(contact[r] - want_contact) <= 5e-4 * want_contact + 1e-12,
+                    f'{what}: run {r} contact force readout at {t:.3f} s is the frame\'s largest node force/contact',
+                    f'{contact_text!r} vs {want_contact:.6g} N')
+    R.check(touching > 0, f'{what}: a frame read out has a wall contact force', f'from {touches[0]} s')
+    # A click on the middle of a plot seeks to the middle of the timeline.
+    canvas = page.d.find_element(By.CSS_SELECTOR, '#plot-list canvas')
+    area = page.js('const l = document.getElementById("plot-list").getBoundingClientRect(),'
+                   ' t = document.getElementById("timeline-track").getBoundingClientRect(),'
+                   ' c = arguments[0].getBoundingClientRect(); return [t.left - c.left, t.right - c.left, c.width, c.height];', canvas)
+    x = round((area[0] + area[1]) / 2)
+    ActionChains(page.d).move_to_element_with_offset(canvas, x - area[2] / 2, 0).click().perform()
+    st = page.state()
+    mid = 0.5 * (st['range'][0] + st['range'][1])
+    R.check(abs(st['t'] - mid) <= 2 * (st['range'][1] - st['range'][0]) / (area[1] - area[0]),
+            f'{what}: a click on a plot\'s middle seeks to the middle of the run', f"t = {st['t']}, middle {mid}")
+    page.ready()
+
+
 def check_drag(page):
     info = page.api.get('/api/run')
     first, last = info['first_time'], info['last_time']
@@ -697,6 +767,7 @@ def check_compare(page, shots):
     page.ready()
     distance_matches('1 s before the end')
     page.shot(shots, 'compare.png')
+    check_plot_readouts(page, ['a', 'b'], 'compare')
     # Overlay: one map, run a's frame with run b's rod.
     from selenium.webdriver.support.ui import Select
     Select(page.d.find_element(By.ID, 'compare-mode')).select_by_value('overlay')
@@ -864,6 +935,7 @@ def main():
             section('scrub by dragging the timeline', check_drag, page)
             section('layer toggle', check_layers, page, args.screenshots)
             section('hover readout', check_hover, page, args.screenshots)
+            section('plot readouts', check_plot_readouts, page, ['a'], 'plots')
             section('zoom and pan', check_zoom_pan, page)
             section('playback', check_playback, page)
             section('deep link', check_deeplink, page, args.screenshots)

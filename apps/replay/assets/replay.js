@@ -372,6 +372,7 @@
     drawPlotCursors();
     updateCommands();
     updateCompare();
+    updatePlotValues();
     if (!(opts && opts.noHash)) scheduleHash();
     checkReady();
   }
@@ -685,18 +686,49 @@
     plots.push(p);
     loadPlot(p);
   }
+  function plotted(p, r) { return (S.info[r].channels || []).some((c) => c.name === p.channel); }
   async function loadPlot(p) {
     const a = plotArea();
     const points = Math.max(1, Math.min(10000, Math.round(a.x1 - a.x0)));
+    p.valuesT = null;
     for (const r of runs()) {
-      const has = (S.info[r].channels || []).some((c) => c.name === p.channel);
-      if (!has) { p.data[r] = null; continue; }
+      if (!plotted(p, r)) { p.data[r] = null; continue; }
       try {
         p.data[r] = await getJSON('/api/series', { channel: p.channel, reduce: p.reduce || undefined, points, run: r });
       } catch (e) { p.data[r] = null; showError(e); }
     }
     p.base = null;
     drawPlot(p);
+    updatePlotValues();
+  }
+  // The readouts at the time cursor are the values the map shows at that time (/api/value),
+  // not the extremes of the bucket the curve draws there (which differed from the map's HUD
+  // wherever a pixel column holds several frames). One set of requests in flight; the last
+  // time asked wins.
+  let plotValuesBusy = false;
+  async function updatePlotValues() {
+    const t = S.t;
+    const stale = plots.filter((p) => p.valuesT !== t);
+    if (plotValuesBusy || !stale.length) return;
+    plotValuesBusy = true;
+    try {
+      await Promise.all(stale.map(async (p) => {
+        const values = {};
+        for (const r of runs()) {
+          if (!plotted(p, r)) continue;
+          values[r] = (await getJSON('/api/value', { channel: p.channel, reduce: p.reduce || undefined, t: fmtParamT(t), run: r })).value;
+        }
+        p.values = values;
+        p.valuesT = t;
+        drawPlot(p);
+      }));
+    } catch (e) {
+      for (const p of stale) p.valuesT = t;
+      showError(e);
+    } finally {
+      plotValuesBusy = false;
+      if (plots.some((p) => p.valuesT !== S.t)) updatePlotValues();
+    }
   }
   function reloadPlots() { for (const p of plots) loadPlot(p); }
 
@@ -793,13 +825,6 @@
     g.fillText(`[${unit.unit}]  ${p.channel}${p.reduce && channelInfo(p.channel) && channelInfo(p.channel).layout !== 'scalars' ? ' · ' + p.reduce : ''}`, area.x0 + tw + 8, 12);
     return base;
   }
-  function valueAt(d, t) {
-    if (!d || !d.t.length) return null;
-    let lo = 0, hi = d.t.length - 1;
-    while (hi - lo > 1) { const m = (lo + hi) >> 1; if (d.t[m] <= t) lo = m; else hi = m; }
-    const i = Math.abs(d.t[lo] - t) <= Math.abs(d.t[hi] - t) ? lo : hi;
-    return d.max[i];
-  }
   function drawPlot(p) {
     const w = p.canvas.clientWidth, h = p.canvas.clientHeight;
     if (!w || !h) return;
@@ -825,14 +850,19 @@
     g.textBaseline = 'alphabetic';
     let xr = Math.min(area.x1, w - (p.removable ? 20 : 0)) - 4;
     const unit = p.display || displayUnit(p.unit, 0);
+    const said = [];
     for (const r of runs().slice().reverse()) {
-      const v = valueAt(p.data[r], S.t);
+      const v = p.values ? p.values[r] : null;
       if (v === null || v === undefined) continue;
       const text = `${S.compare ? r.toUpperCase() + ' ' : ''}${fmtSig(v * unit.f, 4)} ${unit.unit}`;
       g.fillStyle = RUN_COLOURS[r];
       g.fillText(text, xr, 12);
       xr -= g.measureText(text).width + 12;
+      said.unshift(text);
     }
+    // The readout drawn is also the canvas's text, for screen readers (and the browser test).
+    if (p.valuesT !== null && p.valuesT !== undefined)
+      p.canvas.setAttribute('aria-label', `${p.label} at ${fmtTime(p.valuesT)}: ${said.join(', ') || 'no value'}`);
   }
   let plotCursorQueued = false;
   function drawPlotCursors() {
