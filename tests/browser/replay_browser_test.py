@@ -342,6 +342,20 @@ def check_keys(page):
 UNIT_FACTORS = {'N': 1.0, 'mN': 1e-3, 'µN': 1e-6, 'm': 1.0, 'mm': 1e-3, 'µm': 1e-6}
 
 
+def seek_to_first_contact(page):
+    """Moves the cursor to run a's first logged frame in wall contact (so a contact readout is
+    not 0); returns the first frame's time, the output interval and that frame's index."""
+    info = page.api.get('/api/run', run='a')
+    first, dt = info['first_time'], info['output_interval']
+    touches = [e['t'] for e in page.api.get('/api/events', run='a')['events'] if e['kind'] == 'contact_start']
+    if not touches:
+        raise CheckFailed('run a never touches a wall: no contact force to read out')
+    start = round((touches[0] - first) / dt)
+    page.js('window.vascsimReplay.setTime(arguments[0])', first + start * dt)
+    page.wait(lambda d: close(page.state()['t'], first + start * dt, 1e-9), 'the first frame in contact')
+    return first, dt, start
+
+
 def plot_readout(page, label, t):
     """The values a plot's title row shows at time t, in SI: {run: value} ('a' when one run)."""
     want = f'{label} at {t:.3f} s: '
@@ -363,14 +377,7 @@ def check_plot_readouts(page, runs, what):
     not the extremes of a pixel column's bucket, checked against node forces from /api/nodes at
     consecutive logged frames (a column holds several, so a bucket's extreme differs in some);
     a click on a plot seeks to the time under it."""
-    info = page.api.get('/api/run', run='a')
-    first, dt = info['first_time'], info['output_interval']
-    # From the first wall contact on, so the contact readout is not 0 all along.
-    touches = [e['t'] for e in page.api.get('/api/events', run='a')['events'] if e['kind'] == 'contact_start']
-    if not touches:
-        raise CheckFailed('run a never touches a wall: no contact force to read out')
-    start = round((touches[0] - first) / dt)
-    page.js('window.vascsimReplay.setTime(arguments[0])', first + start * dt)
+    first, dt, start = seek_to_first_contact(page)
     touching = 0
     for k in range(start, start + 6):
         if k > start:
@@ -394,7 +401,7 @@ def check_plot_readouts(page, runs, what):
             R.check(r in contact and abs(contact[r] - want_contact) <= 5e-4 * want_contact + 1e-12,
                     f'{what}: run {r} contact force readout at {t:.3f} s is the frame\'s largest node force/contact',
                     f'{contact_text!r} vs {want_contact:.6g} N')
-    R.check(touching > 0, f'{what}: a frame read out has a wall contact force', f'from {touches[0]} s')
+    R.check(touching > 0, f'{what}: a frame read out has a wall contact force', f'from {first + start * dt} s')
     # A click on the middle of a plot seeks to the middle of the timeline.
     canvas = page.d.find_element(By.CSS_SELECTOR, '#plot-list canvas')
     area = page.js('const l = document.getElementById("plot-list").getBoundingClientRect(),'
@@ -407,6 +414,29 @@ def check_plot_readouts(page, runs, what):
     R.check(abs(st['t'] - mid) <= 2 * (st['range'][1] - st['range'][0]) / (area[1] - area[0]),
             f'{what}: a click on a plot\'s middle seeks to the middle of the run', f"t = {st['t']}, middle {mid}")
     page.ready()
+
+
+def check_added_plot(page):
+    """A plot added below reads out its channel at the cursor (the norm of all contact forces,
+    from /api/nodes), and its close button removes it."""
+    from selenium.webdriver.support.ui import Select
+    count = lambda: page.js('return document.querySelectorAll("#plot-list canvas").length')
+    before = count()
+    seek_to_first_contact(page)
+    Select(page.d.find_element(By.ID, 'plot-channel')).select_by_value('force/contact')
+    Select(page.d.find_element(By.ID, 'plot-reduce')).select_by_value('norm')
+    page.d.find_element(By.ID, 'plot-add').click()
+    page.wait(lambda d: count() == before + 1, 'the added plot')
+    t = page.state()['t']
+    nodes = page.api.get('/api/nodes', t=repr(t))
+    want = math.sqrt(sum(f[0] ** 2 + f[1] ** 2 for f in (n['forces']['force/contact'] for n in nodes['nodes'])))
+    values, text = plot_readout(page, 'force/contact (norm of all)', t)
+    R.check(close(nodes['time'], t, 1e-9), 'added plot: the cursor is on a logged frame', f"{nodes['time']} vs {t}")
+    R.check(want > 0 and abs(values['a'] - want) <= 5e-4 * want,
+            'added plot: force/contact (norm of all) reads the norm of every node contact force of the frame',
+            f'{text!r} vs {want:.6g} N')
+    page.js('const p = [...document.querySelectorAll("#plot-list .plot")].pop(); p.querySelector(".plot-close").click();')
+    page.wait(lambda d: count() == before, 'the added plot to be removed')
 
 
 def check_drag(page):
@@ -936,6 +966,7 @@ def main():
             section('layer toggle', check_layers, page, args.screenshots)
             section('hover readout', check_hover, page, args.screenshots)
             section('plot readouts', check_plot_readouts, page, ['a'], 'plots')
+            section('added plot', check_added_plot, page)
             section('zoom and pan', check_zoom_pan, page)
             section('playback', check_playback, page)
             section('deep link', check_deeplink, page, args.screenshots)
