@@ -46,11 +46,11 @@ double distance_to_polyline(const Polyline& path, Vec2 p) {
   return best;
 }
 
-Series collect(const FrameSource& source) {
+Series collect(const FrameSource& source, FrameRange frames) {
   Series s;
-  const std::size_t n = source.frame_count(), step = std::max<std::size_t>(1, n / 5000);
+  const std::size_t step = std::max<std::size_t>(1, (frames.last - frames.first + 1) / 5000);
   FrameState f;
-  for (std::size_t i = 0; i < n; i += step) {
+  for (std::size_t i = frames.first; i <= frames.last; i += step) {
     source.frame(i, f);
     s.t.push_back(f.time);
     s.tip.push_back(f.tip());
@@ -228,8 +228,8 @@ void draw_frame(Canvas& c, const Axes& a, const std::string& xlabel, const std::
          TextAlign::kCenter);
 }
 
-std::vector<std::string> write_plots(const FrameSource& source, const std::string& dir, bool force, int width,
-                                     int height) {
+std::vector<std::string> write_plots(const FrameSource& source, const std::string& dir, bool force, FrameRange frames,
+                                     int width, int height) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -237,7 +237,9 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   // Refuse before drawing anything, so a refusal leaves the directory as it was.
   for (const char* name : kRunPlotFiles)
     check_replaceable_output((fs::path(dir) / name).string(), force, source.run_files());
-  const Series s = collect(source);
+  frames.last = std::min(frames.last, source.frame_count() - 1);
+  if (frames.first > frames.last) throw InputError(dir + ": no logged frame to plot");
+  const Series s = collect(source, frames);
   const LogMetadata& m = source.metadata();
   std::vector<std::string> written;
   Canvas c(width, height);
@@ -331,7 +333,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     const int label_font = static_cast<int>(0.8 * font);
     FrameState f;
     for (int k = 0; k < kSnapshots; ++k) {
-      const std::size_t i = (source.frame_count() - 1) * static_cast<std::size_t>(k) / (kSnapshots - 1);
+      const std::size_t i = frames.first + (frames.last - frames.first) * static_cast<std::size_t>(k) / (kSnapshots - 1);
       source.frame(i, f);
       const float shade = 0.25f + 0.75f * k / (kSnapshots - 1);  // later snapshots darker
       const Rgba rod{0.85f - 0.75f * shade, 0.90f - 0.65f * shade, 0.97f - 0.45f * shade, 1};

@@ -33,9 +33,14 @@ void draw_frame(Canvas& canvas, const Axes& axes, const std::string& xlabel, con
                 const std::string& title, Rgba page,
                 const std::vector<std::pair<double, std::string>>& x_ticks = {});
 
-// Writes the plots into `dir` and returns their paths. Refuses to overwrite an existing plot
-// unless `force`. Throws InputError on failure.
+// Logged frames first..last (inclusive; `last` past the log means its end).
+struct FrameRange {
+  std::size_t first = 0, last = static_cast<std::size_t>(-1);
+};
+
+// Writes the plots of the logged frames in `frames` into `dir` and returns their paths. Refuses
+// to overwrite an existing plot unless `force`. Throws InputError on failure.
 std::vector<std::string> write_plots(const FrameSource& source, const std::string& dir, bool force,
-                                     int width = 1200, int height = 800);
+                                     FrameRange frames = {}, int width = 1200, int height = 800);
 
 }  // namespace vascsim::render

@@ -196,6 +196,17 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
     throw InputError("the time range " + io::format_number(t0) + " .. " + io::format_number(t1) + " s at " + std::to_string(o.fps) +
                      " fps and speed " + io::format_number(o.speed) + " makes " + io::format_number(frames) +
                      " frames, more than " + io::format_number(kMaxVideoFrames) + ": choose a shorter --from/--to or a higher --speed");
+  // The plots show the logged frames of the range (a clip's plots are the clip's).
+  FrameRange plotted;
+  if (!o.plots_dir.empty()) {
+    plotted.first = source.frame_at_time(t0);
+    if (source.time_of(plotted.first) < t0) ++plotted.first;
+    plotted.last = source.frame_at_time(t1);
+    if (plotted.first > plotted.last)
+      throw InputError("--plots: no logged frame from " + io::format_number(t0) + " to " + io::format_number(t1) +
+                       " s to plot (frames are " + io::format_number(source.metadata().output_interval) +
+                       " s apart): widen --from/--to");
+  }
   if (!o.mp4_path.empty()) check_replaceable_output(o.mp4_path, o.force, inputs);
   // What a killed render left here under temporary names goes first (sim/io/output_file.h).
   if (!o.mp4_path.empty()) remove_stale_temporaries(fs::path(o.mp4_path).parent_path().string());
@@ -208,7 +219,7 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   if (!o.plots_dir.empty()) {
     prepare_directory(o.plots_dir, "plots");
     remove_stale_temporaries(o.plots_dir);
-    report.plots = write_plots(source, o.plots_dir, o.force);
+    report.plots = write_plots(source, o.plots_dir, o.force, plotted);
   }
   // An earlier render's frames go only once everything else has been checked (a refused
   // --plots removed them and wrote nothing).

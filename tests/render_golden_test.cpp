@@ -102,7 +102,7 @@ TEST(RenderGolden, TipTrajectoryPlot) {
   spec.duration = 3.0;
   const std::string run = testing::make_run(dir, spec);
   FrameSource source(run);
-  const auto written = write_plots(source, dir / "plots", false, 480, 320);
+  const auto written = write_plots(source, dir / "plots", false, {}, 480, 320);
   // What `run --force` removes of an earlier run is what was drawn.
   std::vector<std::string> names;
   for (const auto& path : written) names.push_back(std::filesystem::path(path).filename().string());

@@ -22,7 +22,7 @@ const std::vector<OptionSpec>& render_options() {
   static const std::vector<OptionSpec> options = {
       {"mp4", "FILE", "write an H.264 MP4 review video (default RUN_DIR/video.mp4 if no output is given)"},
       {"png-dir", "DIR", "write the frames as DIR/frame_000000.png, ..."},
-      {"plots", "DIR", "write plots (trajectory, forces, snapshots, error) as PNG into DIR"},
+      {"plots", "DIR", "write plots (trajectory, forces, snapshots, error) of --from..--to as PNG into DIR"},
       {"width", "W", "frame width in px (default 1280)"},
       {"height", "H", "frame height in px (default 720)"},
       {"fps", "F", "video frames per second (default 30)"},
