@@ -127,40 +127,26 @@ void FrameSource::frame(std::size_t i, FrameState& out) const {
 }
 
 void FrameSource::at_time(double t, FrameState& out) const {
-  const std::size_t i = reader_.frame_at_time(t);
-  frame(i, out);
-  if (i + 1 >= frame_count_ || t <= out.time) return;
-  frame(i + 1, next_);
-  if (next_.time < out.time) throw bad_time(i + 1, next_.time, "before the previous frame's time");
-  const double span = next_.time - out.time;
-  if (span <= 0) return;
-  const double w = std::clamp((t - out.time) / span, 0.0, 1.0);
-  auto blend = [w](std::vector<double>& a, const std::vector<double>& b) {
-    for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) a[k] += w * (b[k] - a[k]);
-  };
-  blend(out.position, next_.position);
-  blend(out.actuation, next_.actuation);
-  blend(out.contact, next_.contact);
-  blend(out.friction, next_.friction);
-  blend(out.drag, next_.drag);
-  out.reference += w * (next_.reference - out.reference);
-  if (out.tip_error >= 0 && next_.tip_error >= 0) out.tip_error += w * (next_.tip_error - out.tip_error);
-  out.time = t;
+  record_at_time(t, record_a_);
+  unpack(record_a_, out);
 }
 
 void FrameSource::record_at_time(double t, std::vector<double>& out) const {
   t = std::clamp(t, first_time_, last_time_);
   const std::size_t i = frame_at_time(t);
-  record(i, out);
+  reader_.read(i, out);
   if (!std::isfinite(out[0]) || out[0] < 0) throw bad_time(i, out[0], "not a finite time >= 0");
   if (i + 1 >= frame_count_ || t <= out[0]) return;
-  std::vector<double> next;
-  record(i + 1, next);
-  if (!(next[0] >= out[0])) throw bad_time(i + 1, next[0], "before the previous frame's time");
-  const double span = next[0] - out[0];
+  reader_.read(i + 1, record_b_);
+  const double next = record_b_[0];
+  if (!std::isfinite(next) || next < 0) throw bad_time(i + 1, next, "not a finite time >= 0");
+  if (next < out[0]) throw bad_time(i + 1, next, "before the previous frame's time");
+  const double span = next - out[0];
   if (span <= 0) return;
+  // Every value at once (positions, forces, the reference, the tip error), so a value reduced
+  // from this record is the one the picture of time t shows.
   const double w = std::clamp((t - out[0]) / span, 0.0, 1.0);
-  for (std::size_t k = 1; k < out.size() && k < next.size(); ++k) out[k] += w * (next[k] - out[k]);
+  for (std::size_t k = 1; k < out.size() && k < record_b_.size(); ++k) out[k] += w * (record_b_[k] - out[k]);
   out[0] = t;
 }
 

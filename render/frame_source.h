@@ -56,11 +56,12 @@ class FrameSource {
   double last_time() const { return last_time_; }
   // Logged frame i exactly.
   void frame(std::size_t i, FrameState& out) const;
-  // The state at time t (s), clamped to the logged range and interpolated between frames.
+  // The state at time t (s), clamped to the logged range and interpolated between frames: the
+  // record_at_time(t) the picture of time t is drawn from.
   void at_time(double t, FrameState& out) const;
-  // The raw record (as record()) at time t: t clamped to the logged range, every value blended
-  // between the two frames around it with at_time's weight, so a value reduced from it (a
-  // plot's readout at the cursor) is what the picture of that time shows. out[0] is the time.
+  // The raw record (as record()) at time t: t clamped to the logged range and every value
+  // blended linearly between the two frames around it. out[0] is the time. A value reduced from
+  // it (a replay plot's readout at the cursor) is what the picture of that time shows.
   void record_at_time(double t, std::vector<double>& out) const;
   // Index of the last logged frame with time <= t.
   std::size_t frame_at_time(double t) const { return reader_.frame_at_time(t); }
@@ -111,7 +112,6 @@ class FrameSource {
   mutable std::vector<double> record_a_, record_b_;
   mutable std::size_t times_checked_ = 0;  // frames [0, times_checked_) passed check_times
   mutable double last_checked_time_ = 0;   // s
-  mutable FrameState next_;
 };
 
 }  // namespace vascsim::render
