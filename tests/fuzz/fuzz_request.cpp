@@ -36,7 +36,7 @@ void parse_like_the_handlers(const RequestParams& p) {
   p.choice("run", "a", {"a", "b"});
   p.number("t", kFirst, -1e12, 1e12);
   p.text("overlay");
-  // /api/series
+  // /api/series and /api/value (channel, reduce; t above)
   if (const auto name = p.text("channel")) {
     LogChannel c;
     c.name = *name;
