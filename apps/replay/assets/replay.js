@@ -723,7 +723,8 @@
         drawPlot(p);
       }));
     } catch (e) {
-      for (const p of stale) p.valuesT = t;
+      // No readout rather than an earlier time's under this one.
+      for (const p of stale) if (p.valuesT !== t) { p.values = null; p.valuesT = t; drawPlot(p); }
       showError(e);
     } finally {
       plotValuesBusy = false;
