@@ -402,6 +402,68 @@ TEST(ReplayServer, AFailedRunReplaysToItsLastFrame) {
   EXPECT_EQ(s.get("/api/frame.png?width=64&height=64&t=" + std::to_string(info["last_time"].get<double>()))->status, 200);
 }
 
+// A run's warnings are events on the page's timeline, at the time each first happened and in the
+// words `vascsim run` printed: a reviewer can go to the moment a step was retried or the rod was
+// squashed. The run is a feed into a dead end that squashes the rod (AFeedTheRodCannotTake...).
+TEST(ReplayServer, EachWarningIsAnEventWhereItFirstHappenedInTheWordsOfVascsimRun) {
+  ScratchDir dir("replay_warnings");
+  const std::string run = dir / "run";
+  vascsim::test::write_text(dir / "crammed.json", R"({
+    "vessels": {"nodes": {"in": [0.1, 0.5], "end": [0.16, 0.5]}, "segments": [{"from": "in", "to": "end", "radius": 0.006}],
+                "start": "in", "goal": "end"},
+    "rod": {"nodes": 40, "length": 0.3, "outer_radius": 0.001, "inner_radius": 0.0005},
+    "loads": {"drag": {"enabled": true, "area": "nodes"}, "damping": {"enabled": true, "coefficient": 0.05}},
+    "control": {"mode": "none", "disturbance": {"amplitude": 0}, "advance": {"speed": 5, "start": 0, "stop": 1}},
+    "run": {"duration": 0.07, "output_interval": 0.01}})");
+  const auto r = vascsim::test::run_vascsim("run " + (dir / "crammed.json") + " --out " + run + " --quiet");
+  ASSERT_EQ(r.exit_code, 1) << r.output;
+  std::set<std::string> printed;
+  const std::string prefix = "vascsim run: warning: ", suffix = " (summary.json /warnings)";
+  for (std::size_t at = r.output.find(prefix); at != std::string::npos; at = r.output.find(prefix, at + 1)) {
+    const std::size_t end = r.output.find(suffix, at);
+    ASSERT_NE(end, std::string::npos) << r.output;
+    printed.insert("warning: " + r.output.substr(at + prefix.size(), end - at - prefix.size()));
+  }
+  EXPECT_GE(printed.size(), 2u) << "a retried step and a squashed rod were expected: " << r.output;
+  std::ifstream in(run + "/summary.json");
+  const json warnings = json::parse(in)["warnings"];
+  LiveServer s({{run}});
+  std::set<std::string> marked;
+  const json events = get_json(s, "/api/events");
+  for (const json& e : events["events"]) {
+    if (e["kind"] != "warning") continue;
+    const std::string label = e["label"];
+    marked.insert(label);
+    // At its summary entry's first time, with its count.
+    bool found = false;
+    for (const auto& [key, w] : warnings.items())
+      if (w["count"].get<int>() > 0 && label.find(" " + std::to_string(w["count"].get<int>()) + " times") != std::string::npos &&
+          std::abs(e["t"].get<double>() - w["first_time"].get<double>()) <= 1e-12)
+        found = true;
+    EXPECT_TRUE(found) << label << " at " << e["t"] << " is no entry of " << warnings.dump();
+  }
+  EXPECT_EQ(marked, printed);
+}
+
+// A hand-edited summary's warnings are listed as far as they make sense; the rest is left out.
+TEST(ReplayServer, AWarningOfAnotherShapeInAHandEditedSummaryIsLeftOut) {
+  ScratchDir dir("replay_warnings_edited");
+  const std::string run = synthetic_run(dir, "run", long_spec());
+  vascsim::test::write_text(run + "/summary.json", R"({"format": "vascsim-summary/1", "ok": true, "axial_strain_max": 0.25,
+      "warnings": {"step_retried": {"count": "many", "first_time": 1}, "unresolved_step": [],
+                   "large_axial_strain": {"count": 3, "first_time": 0.5}}})");
+  LiveServer s({{run}});
+  std::vector<json> listed;
+  const json events = get_json(s, "/api/events");
+  for (const json& e : events["events"])
+    if (e["kind"] == "warning") listed.push_back(e);
+  ASSERT_EQ(listed.size(), 1u);
+  EXPECT_DOUBLE_EQ(listed[0]["t"].get<double>(), 0.5);
+  const std::string label = listed[0]["label"];
+  EXPECT_NE(label.find("(up to 25 %"), std::string::npos) << label;
+  EXPECT_NE(label.find(" 3 times, first at t = 0.5 s"), std::string::npos) << label;
+}
+
 TEST(ReplayServer, CompareAlignsRunsBySimulatedTime) {
   ScratchDir dir("replay_compare");
   render::SyntheticLogSpec a = long_spec(), b = long_spec();

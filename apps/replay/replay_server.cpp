@@ -22,6 +22,7 @@
 #include "apps/replay/series.h"
 #include "render/png_writer.h"
 #include "sim/io/json_fields.h"
+#include "sim/io/run_warnings.h"
 #include "render/view_frame.h"
 #include "sim/scene/input_error.h"
 
@@ -394,6 +395,10 @@ struct ReplayServer::Impl {
     if (s.is_object() && s.contains("navigation") && s["navigation"].value("goal_reached", false) &&
         s["navigation"]["goal_time"].is_number())
       list.push_back({{"t", s["navigation"]["goal_time"]}, {"kind", "goal"}, {"label", "goal reached"}});
+    // Where each warning first happened, in the words `vascsim run` printed.
+    for (const RunWarning& w : listed_warnings(s))
+      if (std::isfinite(w.first_time))
+        list.push_back({{"t", w.first_time}, {"kind", "warning"}, {"label", "warning: " + w.line()}});
     if (s.is_object() && s.contains("ok") && s["ok"] == false)
       list.push_back({{"t", run.source().last_time()},
                       {"kind", "failure"},

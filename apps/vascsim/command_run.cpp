@@ -16,6 +16,7 @@
 #include "sim/io/run_files.h"
 #include "sim/io/run_log.h"
 #include "sim/io/run_summary.h"
+#include "sim/io/run_warnings.h"
 #include "sim/io/scene_reader.h"
 #include "sim/run/compile.h"
 #include "sim/run/run.h"
@@ -223,7 +224,8 @@ int run_run_command(int argc, char** argv) {
   writer.close();
 
   const std::string summary_path = (fs::path(*out) / "summary.json").string();
-  write_file_atomically(summary_path, run_summary_json(scene, run));
+  const std::string summary = run_summary_json(scene, run);
+  write_file_atomically(summary_path, summary);
   const RunStatistics& s = run.statistics();
   if (scene.solver.mode == SolveMode::kStatic)
     std::printf("%s: static equilibrium in %d load increments, %lld Newton iterations, %.2f s, %zu frames -> %s\n",
@@ -249,32 +251,9 @@ int run_run_command(int argc, char** argv) {
       std::printf("feed: pushed with up to %.3g N (mean %.3g N)\n", s.feed_force_max, s.feed_force_mean);
   }
   std::printf("summary: %s\n", summary_path.c_str());
-  const auto warn = [](const char* what, const WarningCount& w) {
-    if (w.count > 0) std::fprintf(stderr, "vascsim run: warning: %s %d times, first at t = %g s (summary.json /warnings)\n", what, w.count, w.first_time);
-  };
-  // Round-off stops are an accepted convergence criterion (docs/solver.md), and steps kept at
-  // a floor (solver.dt_floor, dt_mean_min) over the tolerance the presets' designed trade (docs/accuracy.md): counted, not printed.
-  warn("a step was retried with a smaller dt", s.warnings.step_retried);
-  warn("a step was kept that is not the motion (solver.adaptive \"off\": it ended at a saddle of its incremental "
-       "potential, or an edge turned by more than 0.5 rad in it; a shorter dt or adaptive stepping resolves it)",
-       s.warnings.unresolved_step);
-  warn("paper contact hit contact.paper_iterations unsettled", s.warnings.paper_contact_cap);
-  warn("the static equilibrium is unstable (the Newton matrix has negative pivots)", s.warnings.unstable_equilibrium);
-  warn("the load path reached an unstable equilibrium; the solve left it for a stable one (solver.stable_branch)",
-       s.warnings.left_unstable);
-  warn("the load path jumped off the stable branch where it turns more sharply than the smallest increment follows; the "
-       "equilibrium may be on another branch than slower loading reaches (raise solver.load_steps or solver.max_halvings)",
-       s.warnings.load_path_jumped);
-  warn("the static equilibrium's stability is not decided: the Newton matrix's eigenvalue nearest zero is within its "
-       "round-off at this many nodes (docs/solver.md, \"Limit: static solves of very fine meshes\")",
-       s.warnings.stability_undecided);
-  if (s.warnings.large_axial_strain.count > 0) {
-    char what[300];
-    std::snprintf(what, sizeof what, "an edge of the rod was stretched or squashed by more than %g %% of its rest length (up "
-                  "to %.3g %%: a drive or load stronger than the rod, past its linear stretching model) in a frame",
-                  100 * kLargeAxialStrain, 100 * s.axial_strain_max);
-    warn(what, s.warnings.large_axial_strain);
-  }
+  // Worded once for here and the replay page's timeline (sim/io/run_warnings.h).
+  for (const RunWarning& w : listed_warnings(nlohmann::json::parse(summary)))
+    std::fprintf(stderr, "vascsim run: warning: %s (summary.json /warnings)\n", w.line().c_str());
   if (!ok) {
     std::fprintf(stderr, "vascsim run: simulation failed: %s\n", s.failure.c_str());
     return 1;

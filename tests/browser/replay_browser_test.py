@@ -856,6 +856,58 @@ def log_layout(path):
     return (at + 7) // 8 * 8, 8 * doubles
 
 
+CRAMMED_SCENE = {
+    # A feed into a dead end that squashes the rod (tests/advance_test.cpp): a run with warnings.
+    'name': 'crammed',
+    'vessels': {'nodes': {'in': [0.1, 0.5], 'end': [0.16, 0.5]},
+                'segments': [{'from': 'in', 'to': 'end', 'radius': 0.006}], 'start': 'in', 'goal': 'end'},
+    'rod': {'nodes': 40, 'length': 0.3, 'outer_radius': 0.001, 'inner_radius': 0.0005},
+    'loads': {'drag': {'enabled': True, 'area': 'nodes'}, 'damping': {'enabled': True, 'coefficient': 0.05}},
+    'control': {'mode': 'none', 'disturbance': {'amplitude': 0}, 'advance': {'speed': 5, 'start': 0, 'stop': 1}},
+    'run': {'duration': 0.07, 'output_interval': 0.01},
+}
+
+
+def check_warnings(driver, exe, shots, workdir):
+    """A run's warnings are listed under its summary in the words `vascsim run` printed, marked
+    on the timeline, and a click on one goes to where it first happened."""
+    scene = os.path.join(workdir, 'crammed.json')
+    with open(scene, 'w') as f:
+        json.dump(CRAMMED_SCENE, f)
+    run = os.path.join(workdir, 'crammed')
+    done = subprocess.run([exe, 'run', scene, '--out', run, '--quiet'], capture_output=True, text=True, timeout=300)
+    printed = re.findall(r'^vascsim run: warning: (.*) \(summary\.json /warnings\)$', done.stderr, re.M)
+    R.check(done.returncode == 1 and len(printed) >= 2, 'warnings: the crammed run fails after printing warnings',
+            f'exit {done.returncode}: {done.stderr[-400:]!r}')
+    with open(os.path.join(run, 'summary.json')) as f:
+        summary = json.load(f)['warnings']
+    server = Server(exe, [run])
+    try:
+        page = Page(driver, Api(server.url))
+        page.open(page.api.page)
+        notes = page.wait(lambda d: d.find_elements(By.CSS_SELECTOR, '#run-warnings .warning-note'), 'the warnings')
+        texts = [n.text for n in notes]
+        R.check(sorted(texts) == sorted('warning: ' + p for p in printed),
+                'warnings: the summary panel lists the warnings vascsim run printed', f'{texts} vs {printed}')
+        marks = page.d.find_elements(By.CSS_SELECTOR, '.event-mark.warning')
+        R.check(len(marks) == len(printed), 'warnings: each is marked on the timeline', f'{len(marks)} marks')
+        # The squashed rod's note goes to the first frame it was squashed in (summary.json).
+        squashed = [n for n in notes if 'stretched or squashed' in n.text]
+        want = summary['large_axial_strain']['first_time']
+        if R.check(len(squashed) == 1, 'warnings: the large strain is listed', f'{texts}'):
+            page.keys(Keys.END)
+            squashed[0].click()
+            page.wait(lambda d: close(page.state()['t'], want, 1e-9), f'the time to go to {want} s')
+            page.ready()
+            R.check(close(float(page.frame_params()['t']), want, 1e-9),
+                    'warnings: a click on a warning shows the frame where it first happened', f"{page.frame_params()['t']}")
+        page.shot(shots, 'warnings.png')
+        page.collect_log()
+        R.check(not page.severe, 'no JS errors in the browser log (warnings)', '; '.join(page.severe[:5]))
+    finally:
+        server.stop('warnings', driver)
+
+
 def check_live(driver, exe, run, shots, workdir):
     """A log still being written: the page shows "live", follows the end, then the summary."""
     src = os.path.join(run, 'frames.vlog')
@@ -981,6 +1033,7 @@ def main():
                 server = None
             if not args.url:
                 section('live follow', check_live, driver, args.vascsim, args.run, args.screenshots, workdir)
+                section('warnings', check_warnings, driver, args.vascsim, args.screenshots, workdir)
             if args.url_b or (args.vascsim and args.run_b and not args.url):
                 if args.url_b:
                     url_b = args.url_b

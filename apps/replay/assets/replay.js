@@ -603,7 +603,7 @@
     track.addEventListener('pointercancel', end);
   }
 
-  const EVENT_TEXT = { contact_start: 'wall contact starts', contact_end: 'wall contact ends', goal: 'goal reached', failure: 'run failed' };
+  const EVENT_TEXT = { contact_start: 'wall contact starts', contact_end: 'wall contact ends', goal: 'goal reached', failure: 'run failed', warning: 'warning' };
   const events = { a: [], b: [] };
   async function loadEvents() {
     for (const r of runs()) {
@@ -629,6 +629,21 @@
       }
     }
     box.appendChild(frag);
+    // The run's warnings under its summary, each a link to where it first happened.
+    const list = $('run-warnings');
+    list.innerHTML = '';
+    for (const r of runs()) {
+      for (const ev of events[r]) {
+        if (ev.kind !== 'warning') continue;
+        const note = document.createElement('div');
+        note.className = 'warning-note';
+        note.textContent = `${S.compare ? r.toUpperCase() + ': ' : ''}${ev.label}`;
+        note.title = `go to t = ${fmtTime(ev.t)}`;
+        note.dataset.t = ev.t;
+        note.addEventListener('click', () => setTime(ev.t));
+        list.appendChild(note);
+      }
+    }
   }
 
   // ------------------------------------------------------------------ plots
