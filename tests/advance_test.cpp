@@ -206,22 +206,13 @@ TEST(Advance, AFeedThatWouldTakeTheDrivesGripIntoAWallIsRefusedWhereItWouldArriv
   EXPECT_NO_THROW(compile(read_scene_text(with_duration(before), "blocked.json")));
 }
 
-// A feed the rod cannot take (5 m/s into a 6 cm dead end, a 1 mm rod of 40 nodes: the grip
-// stays clear of the cap) squashes the rod past its linear stretching model, and then a step
+// A feed the rod cannot take (tests/scenes/crammed_feed.json: 5 m/s into a 6 cm dead end, a 1 mm
+// rod of 40 nodes; the grip stays clear of the cap) squashes the rod past its linear stretching model, and then a step
 // fails. The failure said only that the step did not resolve; it now says how far the rod was
 // squashed, as the strain warning does (RunWarnings.LargeAxialStrainIsCountedAndItsSizeReported
 // checks that measure against Hooke's law).
 TEST(Advance, AFeedTheRodCannotTakeFailsSayingHowFarItSquashedTheRod) {
-  const char* crammed = R"({
-    "name": "crammed",
-    "vessels": {"nodes": {"in": [0.1, 0.5], "end": [0.16, 0.5]}, "segments": [{"from": "in", "to": "end", "radius": 0.006}],
-                "start": "in", "goal": "end"},
-    "rod": {"nodes": 40, "length": 0.3, "outer_radius": 0.001, "inner_radius": 0.0005},
-    "loads": {"drag": {"enabled": true, "area": "nodes"}, "damping": {"enabled": true, "coefficient": 0.05}},
-    "control": {"mode": "none", "disturbance": {"amplitude": 0}, "advance": {"speed": 5, "start": 0, "stop": 1}},
-    "run": {"duration": 0.07, "output_interval": 0.01}
-  })";
-  vascsim::Run run(compile(read_scene_text(crammed, "crammed.json")));
+  vascsim::Run run(compile(read_scene_file(std::string(VASCSIM_SOURCE_DIR) + "/tests/scenes/crammed_feed.json")));
   Frames frames;
   ASSERT_FALSE(run.run(frames)) << "0.35 m of feed went into 0.026 m of lumen";
   const std::string& failure = run.statistics().failure;

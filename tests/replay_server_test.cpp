@@ -404,18 +404,11 @@ TEST(ReplayServer, AFailedRunReplaysToItsLastFrame) {
 
 // A run's warnings are events on the page's timeline, at the time each first happened and in the
 // words `vascsim run` printed: a reviewer can go to the moment a step was retried or the rod was
-// squashed. The run is a feed into a dead end that squashes the rod (AFeedTheRodCannotTake...).
+// squashed. The run is a feed into a dead end that squashes the rod (tests/scenes/crammed_feed.json).
 TEST(ReplayServer, EachWarningIsAnEventWhereItFirstHappenedInTheWordsOfVascsimRun) {
   ScratchDir dir("replay_warnings");
   const std::string run = dir / "run";
-  vascsim::test::write_text(dir / "crammed.json", R"({
-    "vessels": {"nodes": {"in": [0.1, 0.5], "end": [0.16, 0.5]}, "segments": [{"from": "in", "to": "end", "radius": 0.006}],
-                "start": "in", "goal": "end"},
-    "rod": {"nodes": 40, "length": 0.3, "outer_radius": 0.001, "inner_radius": 0.0005},
-    "loads": {"drag": {"enabled": true, "area": "nodes"}, "damping": {"enabled": true, "coefficient": 0.05}},
-    "control": {"mode": "none", "disturbance": {"amplitude": 0}, "advance": {"speed": 5, "start": 0, "stop": 1}},
-    "run": {"duration": 0.07, "output_interval": 0.01}})");
-  const auto r = vascsim::test::run_vascsim("run " + (dir / "crammed.json") + " --out " + run + " --quiet");
+  const auto r = vascsim::test::run_vascsim("run " + vascsim::test::source_path("tests/scenes/crammed_feed.json") + " --out " + run + " --quiet");
   ASSERT_EQ(r.exit_code, 1) << r.output;
   std::set<std::string> printed;
   const std::string prefix = "vascsim run: warning: ", suffix = " (summary.json /warnings)";

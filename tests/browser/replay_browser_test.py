@@ -856,26 +856,15 @@ def log_layout(path):
     return (at + 7) // 8 * 8, 8 * doubles
 
 
-CRAMMED_SCENE = {
-    # A feed into a dead end that squashes the rod (tests/advance_test.cpp): a run with warnings.
-    'name': 'crammed',
-    'vessels': {'nodes': {'in': [0.1, 0.5], 'end': [0.16, 0.5]},
-                'segments': [{'from': 'in', 'to': 'end', 'radius': 0.006}], 'start': 'in', 'goal': 'end'},
-    'rod': {'nodes': 40, 'length': 0.3, 'outer_radius': 0.001, 'inner_radius': 0.0005},
-    'loads': {'drag': {'enabled': True, 'area': 'nodes'}, 'damping': {'enabled': True, 'coefficient': 0.05}},
-    'control': {'mode': 'none', 'disturbance': {'amplitude': 0}, 'advance': {'speed': 5, 'start': 0, 'stop': 1}},
-    'run': {'duration': 0.07, 'output_interval': 0.01},
-}
+# A feed into a dead end that squashes the rod: a run with warnings.
+CRAMMED_SCENE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scenes', 'crammed_feed.json')
 
 
 def check_warnings(driver, exe, shots, workdir):
     """A run's warnings are listed under its summary in the words `vascsim run` printed, marked
     on the timeline, and a click on one goes to where it first happened."""
-    scene = os.path.join(workdir, 'crammed.json')
-    with open(scene, 'w') as f:
-        json.dump(CRAMMED_SCENE, f)
     run = os.path.join(workdir, 'crammed')
-    done = subprocess.run([exe, 'run', scene, '--out', run, '--quiet'], capture_output=True, text=True, timeout=300)
+    done = subprocess.run([exe, 'run', CRAMMED_SCENE, '--out', run, '--quiet'], capture_output=True, text=True, timeout=300)
     printed = re.findall(r'^vascsim run: warning: (.*) \(summary\.json /warnings\)$', done.stderr, re.M)
     R.check(done.returncode == 1 and len(printed) >= 2, 'warnings: the crammed run fails after printing warnings',
             f'exit {done.returncode}: {done.stderr[-400:]!r}')
