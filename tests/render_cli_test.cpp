@@ -10,6 +10,8 @@
 #include <csignal>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "render/image_diff.h"
 #include "render/png_writer.h"
 #include "sim/log/frame_log.h"
@@ -204,6 +206,25 @@ TEST(RenderCli, ASummaryTheLogCannotBeCheckedAgainstIsAWarning) {
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("vascsim export: warning: " + why), std::string::npos) << r.err;
   }
+}
+
+// A video, still or CSV of a failed run ends with its last frame before the failure and does not
+// say so itself: render and export warn, naming the failure as summary.json gives it.
+TEST(RenderCli, AFailedRunIsSaidToHaveFailed) {
+  ScratchDir dir("cli_failed_run");
+  const std::string run = dir / "run";
+  testing::CommandResult r =
+      run_vascsim("run '" + std::string(VASCSIM_SOURCE_DIR) + "/tests/scenes/crammed_feed.json' --out '" + run + "' --quiet", dir);
+  ASSERT_EQ(r.exit_code, 1) << r.err;
+  std::ifstream in(run + "/summary.json");
+  const std::string failure = nlohmann::json::parse(in)["failure"];
+  const std::string said = "warning: " + run + "/summary.json: the run failed (" + failure + "); its log ends";
+  r = run_vascsim("render '" + run + "' --still 0.05 --width 64 --height 64 --png '" + (dir / "still.png") + "'", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("vascsim render: " + said), std::string::npos) << r.err;
+  r = run_vascsim("export '" + run + "' --csv '" + (dir / "csv") + "'", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("vascsim export: " + said), std::string::npos) << r.err;
 }
 
 // A summary names the scene its run ran (provenance.scene_hash), as the log does: another run's

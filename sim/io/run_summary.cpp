@@ -131,4 +131,22 @@ std::string check_log_matches_summary(const std::string& run_path, std::size_t l
   return "";
 }
 
+std::string failed_run_warning(const std::string& run_path) {
+  const std::string run_dir = run_dir_of(run_path);
+  if (run_dir.empty()) return "";
+  std::optional<json> summary;
+  try {
+    summary = read_run_summary(run_dir);
+  } catch (const InputError&) {
+    return "";
+  }
+  if (!summary || !summary->is_object()) return "";
+  const auto ok = summary->find("ok");
+  if (ok == summary->end() || !ok->is_boolean() || ok->get<bool>()) return "";
+  const auto failure = summary->find("failure");
+  return "warning: " + (std::filesystem::path(run_dir) / "summary.json").string() + ": the run failed (" +
+         (failure != summary->end() && failure->is_string() ? failure->get<std::string>() : "no /failure given") +
+         "); its log ends with the last frame before the failure";
+}
+
 }  // namespace vascsim

@@ -20,4 +20,10 @@ std::string run_summary_json(const Scene& scene, const Run& run);
 // and for a run without a summary (stopped or still running) or a log copied out of its run.
 [[nodiscard]] std::string check_log_matches_summary(const std::string& run_path, std::size_t log_frames, const std::string& log_scene_hash);
 
+// For a run directory whose summary.json says the run failed: a warning that names its failure,
+// for what is made from its log (a video, a still, a CSV) ends with the last frame before it and
+// does not say so itself. Empty for a run that did not fail, has no summary, or whose summary
+// cannot be read (check_log_matches_summary warns of that).
+[[nodiscard]] std::string failed_run_warning(const std::string& run_path);
+
 }  // namespace vascsim
