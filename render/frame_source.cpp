@@ -46,9 +46,7 @@ FrameSource::FrameSource(const std::string& run_path) : log_path_(frame_log_path
   tip_error_ = require_layout(h, channel::kTipError, ChannelLayout::kScalars, log_path_);
   frame_count_ = reader_.frame_count();
   if (frame_count_ == 0) throw InputError(log_path_ + ": frame log has no complete frame");
-  for (std::string warning : {incomplete_run_warning(run_path), check_log_matches_summary(run_path, frame_count_, metadata_.scene_hash),
-                              failed_run_warning(run_path)})
-    if (!warning.empty()) warnings_.push_back(std::move(warning));
+  warnings_ = check_log_against_run(run_path, frame_count_, metadata_.scene_hash);
   first_time_ = checked_time(0);
   last_time_ = checked_time(frame_count_ - 1);
   if (last_time_ < first_time_) throw bad_time(frame_count_ - 1, last_time_, "before the first frame's time");

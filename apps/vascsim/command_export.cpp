@@ -67,10 +67,8 @@ int run_export_command(int argc, char** argv) {
   const FrameLogReader log(log_path);
   const std::string& run = args.positional().front();
   for (const std::string& warning :
-       {incomplete_run_warning(run),
-        check_log_matches_summary(run, log.frame_count(), read_log_metadata(log.header().metadata, log_path).scene_hash),
-        failed_run_warning(run)})
-    if (!warning.empty()) std::fprintf(stderr, "vascsim export: %s\n", warning.c_str());
+       check_log_against_run(run, log.frame_count(), read_log_metadata(log.header().metadata, log_path).scene_hash))
+    std::fprintf(stderr, "vascsim export: %s\n", warning.c_str());
   const auto files = export_csv(log, *dir, options);
   std::printf("wrote %zu CSV file%s to %s\n", files.size(), files.size() == 1 ? "" : "s", dir->c_str());
   return 0;

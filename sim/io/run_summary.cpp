@@ -99,20 +99,45 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   return j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n";  // a scene file name need not be UTF-8
 }
 
-std::string check_log_matches_summary(const std::string& run_path, std::size_t log_frames, const std::string& log_scene_hash) {
+namespace {
+
+// A summary saying its run failed: what is made from the log (a video, a still, a CSV) ends with
+// the last frame before the failure and does not say so itself.
+std::string failure_warning(const json& summary, const std::string& summary_path) {
+  const auto ok = summary.find("ok");
+  if (ok == summary.end() || !ok->is_boolean() || ok->get<bool>()) return "";
+  const auto failure = summary.find("failure");
+  return "warning: " + summary_path + ": the run failed (" +
+         (failure != summary.end() && failure->is_string() ? failure->get<std::string>() : "no /failure given") +
+         "); its log ends with the last frame before the failure";
+}
+
+}  // namespace
+
+std::vector<std::string> check_log_against_run(const std::string& run_path, std::size_t log_frames,
+                                               const std::string& log_scene_hash) {
   namespace fs = std::filesystem;
+  std::vector<std::string> warnings;
+  const auto warn = [&](const std::string& warning) {
+    if (!warning.empty()) warnings.push_back(warning);
+  };
+  warn(incomplete_run_warning(run_path));
   const std::string run_dir = run_dir_of(run_path);
-  if (run_dir.empty()) return "";
+  if (run_dir.empty()) return warnings;
   const fs::path log_path = fs::path(run_dir) / "frames.vlog", summary_path = fs::path(run_dir) / "summary.json";
   const std::string not_checked = ", so " + log_path.string() + " was not checked against it (its own checks still apply)";
   std::optional<json> summary;
   try {
     summary = read_run_summary(run_dir);
   } catch (const InputError& e) {
-    return std::string("warning: ") + e.what() + not_checked;
+    warn(std::string("warning: ") + e.what() + not_checked);
+    return warnings;
   }
-  if (!summary) return "";
-  if (!summary->is_object()) return "warning: " + summary_path.string() + ": not a JSON object" + not_checked;
+  if (!summary) return warnings;
+  if (!summary->is_object()) {
+    warn("warning: " + summary_path.string() + ": not a JSON object" + not_checked);
+    return warnings;
+  }
   const json::json_pointer hash_pointer("/provenance/scene_hash");
   if (summary->contains(hash_pointer) && (*summary)[hash_pointer].is_string()) {
     const auto summary_hash = (*summary)[hash_pointer].get<std::string>();
@@ -123,30 +148,13 @@ std::string check_log_matches_summary(const std::string& run_path, std::size_t l
   }
   const json* frames = summary->contains("frames") ? &(*summary)["frames"] : nullptr;
   if (!frames || !frames->is_number_unsigned())
-    return "warning: " + summary_path.string() + ": no /frames count (not a summary vascsim wrote)" + not_checked;
-  const auto expected = frames->get<std::uint64_t>();
-  if (expected != log_frames)
+    warn("warning: " + summary_path.string() + ": no /frames count (not a summary vascsim wrote)" + not_checked);
+  else if (frames->get<std::uint64_t>() != log_frames)
     throw InputError(log_path.string() + ": " + std::to_string(log_frames) + " frames, but " + summary_path.string() +
-                     " says the run wrote " + std::to_string(expected) + ": the log was cut or appended to after the run ended (run it again, or copy it again)");
-  return "";
-}
-
-std::string failed_run_warning(const std::string& run_path) {
-  const std::string run_dir = run_dir_of(run_path);
-  if (run_dir.empty()) return "";
-  std::optional<json> summary;
-  try {
-    summary = read_run_summary(run_dir);
-  } catch (const InputError&) {
-    return "";
-  }
-  if (!summary || !summary->is_object()) return "";
-  const auto ok = summary->find("ok");
-  if (ok == summary->end() || !ok->is_boolean() || ok->get<bool>()) return "";
-  const auto failure = summary->find("failure");
-  return "warning: " + (std::filesystem::path(run_dir) / "summary.json").string() + ": the run failed (" +
-         (failure != summary->end() && failure->is_string() ? failure->get<std::string>() : "no /failure given") +
-         "); its log ends with the last frame before the failure";
+                     " says the run wrote " + std::to_string(frames->get<std::uint64_t>()) +
+                     ": the log was cut or appended to after the run ended (run it again, or copy it again)");
+  warn(failure_warning(*summary, summary_path.string()));
+  return warnings;
 }
 
 }  // namespace vascsim
