@@ -308,10 +308,29 @@ TEST(ReplayServer, ValueAtATimeIsWhatTheFrameOfThatTimeShows) {
   const std::string run = synthetic_run(dir, "run", long_spec());
   LiveServer s({{run}});
   render::FrameSource source(run);
-  render::FrameState state;
+  // The reference, from the two logged frames around t, blended here by hand with the weight a
+  // video frame between them has: (t - t0) / (t1 - t0), t clamped to the log.
+  auto blended = [&](double t) {
+    t = std::clamp(t, source.first_time(), source.last_time());
+    std::size_t i = 0;
+    while (i + 1 < source.frame_count() && source.time_of(i + 1) <= t) ++i;
+    render::FrameState a, b;
+    source.frame(i, a);
+    if (i + 1 == source.frame_count()) return a;
+    source.frame(i + 1, b);
+    const double w = (t - a.time) / (b.time - a.time);
+    for (std::size_t k = 0; k < a.actuation.size(); ++k) a.actuation[k] += w * (b.actuation[k] - a.actuation[k]);
+    for (std::size_t k = 0; k < a.contact.size(); ++k) a.contact[k] += w * (b.contact[k] - a.contact[k]);
+    a.reference += w * (b.reference - a.reference);
+    a.tip_error += w * (b.tip_error - a.tip_error);
+    a.time = t;
+    return a;
+  };
   const double between = source.time_of(42) + 0.37 * (source.time_of(43) - source.time_of(42));
   for (const double t : {source.time_of(42), between, -1.0, 1e6}) {
-    source.at_time(t, state);
+    const render::FrameState want = blended(t);
+    render::FrameState drawn;  // what the map's HUD is painted from
+    source.at_time(t, drawn);
     char at[40];
     std::snprintf(at, sizeof at, "&t=%.17g", t);
     const json contact = get_json(s, std::string("/api/value?channel=force/contact&reduce=max") + at);
@@ -319,17 +338,21 @@ TEST(ReplayServer, ValueAtATimeIsWhatTheFrameOfThatTimeShows) {
     const json error = get_json(s, std::string("/api/value?channel=tip/error") + at);
     const json x = get_json(s, std::string("/api/value?channel=tip/reference&reduce=x") + at);
     const json y = get_json(s, std::string("/api/value?channel=tip/reference&reduce=y") + at);
-    EXPECT_DOUBLE_EQ(contact["time"].get<double>(), std::clamp(t, source.first_time(), source.last_time())) << t;
-    EXPECT_NEAR(contact["value"].get<double>(), state.max_contact(), 1e-12 * state.max_contact()) << t;
-    EXPECT_NEAR(magnetic["value"].get<double>(), state.actuation_total().norm(), 1e-12 * state.actuation_total().norm()) << t;
-    EXPECT_NEAR(error["value"].get<double>(), state.tip_error, 1e-12 * state.tip_error) << t;
-    EXPECT_NEAR(x["value"].get<double>(), state.reference.x(), 1e-12) << t;
-    EXPECT_NEAR(y["value"].get<double>(), state.reference.y(), 1e-12) << t;
+    EXPECT_DOUBLE_EQ(contact["time"].get<double>(), want.time) << t;
+    const render::FrameState* states[] = {&want, &drawn};
+    for (const render::FrameState* f : states) {
+      EXPECT_NEAR(contact["value"].get<double>(), f->max_contact(), 1e-12 * f->max_contact()) << t;
+      EXPECT_NEAR(magnetic["value"].get<double>(), f->actuation_total().norm(), 1e-12 * f->actuation_total().norm()) << t;
+      EXPECT_NEAR(error["value"].get<double>(), f->tip_error, 1e-12 * f->tip_error) << t;
+      EXPECT_NEAR(x["value"].get<double>(), f->reference.x(), 1e-12) << t;
+      EXPECT_NEAR(y["value"].get<double>(), f->reference.y(), 1e-12) << t;
+    }
     EXPECT_EQ(contact["unit"], "N");
     EXPECT_EQ(contact["reduce"], "max");
   }
   // Between frames the value is blended, not a neighbour's: the reference moves, so the test
   // above can tell them apart (the synthetic forces and tip error keep their sizes).
+  render::FrameState state;
   source.frame(42, state);
   const Vec2 at_42 = state.reference;
   source.frame(43, state);
