@@ -890,6 +890,16 @@ def check_warnings(driver, exe, shots, workdir):
             page.ready()
             R.check(close(float(page.frame_params()['t']), want, 1e-9),
                     'warnings: a click on a warning shows the frame where it first happened', f"{page.frame_params()['t']}")
+            # The keyboard reaches the note too: focused (as Tab would), Enter goes there.
+            page.keys(Keys.END)
+            page.wait(lambda d: not close(page.state()['t'], want, 1e-9), 'the time to leave the warning')
+            focused = page.js('arguments[0].focus(); return document.activeElement === arguments[0];', squashed[0])
+            R.check(focused, 'warnings: a warning takes the keyboard focus')
+            ActionChains(page.d).send_keys(Keys.ENTER).perform()
+            page.wait(lambda d: close(page.state()['t'], want, 1e-9), f'Enter to go to {want} s')
+            page.ready()
+            R.check(close(float(page.frame_params()['t']), want, 1e-9),
+                    'warnings: Enter on a focused warning shows the frame where it first happened', f"{page.frame_params()['t']}")
         page.shot(shots, 'warnings.png')
         page.collect_log()
         R.check(not page.severe, 'no JS errors in the browser log (warnings)', '; '.join(page.severe[:5]))

@@ -635,7 +635,9 @@
     for (const r of runs()) {
       for (const ev of events[r]) {
         if (ev.kind !== 'warning') continue;
-        const note = document.createElement('div');
+        // A button, so the keyboard reaches it (Tab, then Enter) as the mouse does.
+        const note = document.createElement('button');
+        note.type = 'button';
         note.className = 'warning-note';
         note.textContent = `${S.compare ? r.toUpperCase() + ': ' : ''}${ev.label}`;
         note.title = `go to t = ${fmtTime(ev.t)}`;
