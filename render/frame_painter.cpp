@@ -33,6 +33,7 @@ constexpr Rgba kGoal = hex(0xC92A2A);
 constexpr Rgba kPanel = hex(0xFFFFFF);
 constexpr Rgba kPanelEdge = hex(0xD0D5DB);
 constexpr Rgba kMuted = hex(0x5F6B76);
+constexpr Rgba kFailure = hex(0xC92A2A);  // the HUD's "Run failed" row
 
 glm::vec2 apply(const glm::dmat3& m, Vec2 p) {
   const glm::dvec3 q = m * glm::dvec3(p.x(), p.y(), 1.0);
@@ -162,8 +163,8 @@ ForceScales choose_force_scales(const FrameSource& source, const View& view) {
 }
 
 FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const ForceScales& scales,
-                           const FrameState& first_frame)
-    : meta_(metadata), view_(view), scales_(scales), world_(world_box(metadata, first_frame)) {
+                           const FrameState& first_frame, const FailedRuns& failed)
+    : meta_(metadata), view_(view), scales_(scales), failed_(failed), world_(world_box(metadata, first_frame)) {
   // The lumen is triangulated once, in metres; each frame only moves the vertices. A single
   // axis-aligned rectangle (a maze logs its bounds so) is filled with a clear as before: cheaper,
   // and maze pictures stay exactly what they were.
@@ -181,6 +182,8 @@ FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const 
   // instead: a panel squeezed to nothing drew its values over the map without their labels.
   map_x1_ = static_cast<float>(side_panel_ ? std::round(w - std::max(0.28 * w, 15.0 * font_px_)) : w);
   if (map_x1_ - map_x0_ < 0.3 * w) side_panel_ = false, map_x1_ = static_cast<float>(w);
+  // A card taller than the frame (a failed run's thumbnail) leaves out the title, not a value.
+  if (hud && !side_panel_ && card_bottom() > h) card_title_line_ = false;
   // Without a side panel the HUD card takes a band across the top: the map starts below it, so
   // the card never hides a wall or the rod.
   // Likewise the legend (arrow scales, scale bar) takes a band across the bottom.
@@ -348,7 +351,7 @@ void FramePainter::paint_arrows(Canvas& c, const std::vector<double>& forces, do
 
 float FramePainter::card_bottom() const {
   const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = 1.45f * fs;
-  return 0.5f * pad + 5.6f * row + pad;
+  return 0.5f * pad + (4.3f + (card_title_line_ ? 1.3f : 0.0f) + static_cast<float>(failed_.count())) * row + pad;
 }
 
 float FramePainter::band_height() const {
@@ -413,7 +416,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   };
   if (hud) {
     const float hud_top = y;
-    if (!meta_.title.empty()) {
+    if (!meta_.title.empty() && (side_panel_ || card_title_line_)) {
       c.text(meta_.title, {lx, y}, static_cast<int>(std::lround(1.1 * fs)), kInk);
       y += 1.3f * row;
     }
@@ -421,7 +424,8 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     std::snprintf(buf, sizeof buf, "%.3f s", f.time);
     // The first label that leaves room for the value; in a card too narrow for any, the value
     // alone (the rows' order is the same at every size).
-    auto field = [&](std::initializer_list<const char*> labels, const std::string& value) {
+    auto field = [&](std::initializer_list<const char*> labels, const std::string& value, Rgba label_colour = kMuted,
+                     Rgba value_colour = kInk) {
       const float value_left = rx - c.text_width(value, fs);
       const char* shown = nullptr;
       for (const char* label : labels)
@@ -429,8 +433,8 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
           shown = label;
           break;
         }
-      if (shown) c.text(shown, {lx, y}, fs, kMuted);
-      c.text(value, {rx, y}, fs, kInk, TextAlign::kRight);
+      if (shown) c.text(shown, {lx, y}, fs, label_colour);
+      c.text(value, {rx, y}, fs, value_colour, TextAlign::kRight);
       hud_fields_.push_back({shown ? shown : "", shown ? lx + c.text_width(shown, fs) : lx, value_left});
       y += row;
     };
@@ -439,6 +443,14 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     field({"Magnetic force", "Magnetic", "Force"},
           f.actuation.empty() ? std::string("n/a") : format_value(f.actuation_total().norm(), scales_.unit, 2));
     field({"Max contact", "Contact"}, f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
+    if (failed_.run) {
+      std::snprintf(buf, sizeof buf, "at %.3f s", *failed_.run);
+      field({"Run failed", "Failed"}, buf, kFailure, kFailure);
+    }
+    if (failed_.overlay) {
+      std::snprintf(buf, sizeof buf, "at %.3f s", *failed_.overlay);
+      field({"Compared run failed", "Compared failed", "B failed"}, buf, kFailure, kFailure);
+    }
     record("hud", hud_top, y - row);
   }
   if (!side_panel_ || !legend) return;

@@ -46,10 +46,13 @@ FrameSource::FrameSource(const std::string& run_path) : log_path_(frame_log_path
   tip_error_ = require_layout(h, channel::kTipError, ChannelLayout::kScalars, log_path_);
   frame_count_ = reader_.frame_count();
   if (frame_count_ == 0) throw InputError(log_path_ + ": frame log has no complete frame");
-  warnings_ = check_log_against_run(run_path, frame_count_, metadata_.scene_hash);
+  LogRunCheck check = check_log_against_run(run_path, frame_count_, metadata_.scene_hash);
+  warnings_ = std::move(check.warnings);
   first_time_ = checked_time(0);
   last_time_ = checked_time(frame_count_ - 1);
   if (last_time_ < first_time_) throw bad_time(frame_count_ - 1, last_time_, "before the first frame's time");
+  // A summary without the time reached (hand-edited) still marks the run failed, after its log.
+  if (check.failed_at) failed_at_ = std::isfinite(*check.failed_at) ? *check.failed_at : last_time_;
 }
 
 std::vector<std::string> FrameSource::run_files() const {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,8 @@ class FrameSource {
   // What a user should know about the log's run on opening it: a run without summary.json
   // (stopped or still writing), or a summary the log could not be checked against.
   const std::vector<std::string>& warnings() const { return warnings_; }
+  // The run failed (its summary says so): the time it had reached (s). Its pictures say so.
+  std::optional<double> failed_at() const { return failed_at_; }
   std::size_t frame_count() const { return frame_count_; }
   double first_time() const { return first_time_; }
   double last_time() const { return last_time_; }
@@ -106,6 +109,7 @@ class FrameSource {
   FrameLogReader reader_;
   LogMetadata metadata_;
   std::vector<std::string> warnings_;
+  std::optional<double> failed_at_;
   std::size_t frame_count_ = 0;
   double first_time_ = 0, last_time_ = 0;
   int position_ = -1, actuation_ = -1, contact_ = -1, friction_ = -1, drag_ = -1, reference_ = -1, tip_error_ = -1;

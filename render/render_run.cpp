@@ -240,7 +240,8 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   FrameState state, overlay_state;
   source.frame(0, state);
   const ForceScales scales = choose_force_scales(source, view);
-  FramePainter painter(source.metadata(), view, scales, state);
+  FramePainter painter(source.metadata(), view, scales, state,
+                       {source.failed_at(), overlay ? overlay->failed_at() : std::nullopt});
   Canvas canvas(view.width, view.height, o.aa);
 
   // Video frames must reach the encoder in order even when two workers also compress PNGs.

@@ -219,12 +219,25 @@ TEST(RenderCli, AFailedRunIsSaidToHaveFailed) {
   std::ifstream in(run + "/summary.json");
   const std::string failure = nlohmann::json::parse(in)["failure"];
   const std::string said = "warning: " + run + "/summary.json: the run failed (" + failure + "); its log ends";
-  r = run_vascsim("render '" + run + "' --still 0.05 --width 64 --height 64 --png '" + (dir / "still.png") + "'", dir);
+  const std::string still = " --still 0.05 --width 320 --height 180 --png '" + (dir / "still.png") + "' --force";
+  r = run_vascsim("render '" + run + "'" + still, dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("vascsim render: " + said), std::string::npos) << r.err;
   r = run_vascsim("export '" + run + "' --csv '" + (dir / "csv") + "'", dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("vascsim export: " + said), std::string::npos) << r.err;
+  // The picture says so too (its HUD's last row, render_failed_run_test.cpp): the same still of
+  // the run with its summary edited to a finished run's differs.
+  const std::string failed_still = testing::read_bytes(dir / "still.png");
+  std::ifstream summary_in(run + "/summary.json");
+  nlohmann::json summary = nlohmann::json::parse(summary_in);
+  summary["ok"] = true;
+  summary["failure"] = nullptr;
+  testing::write_bytes(run + "/summary.json", summary.dump());
+  r = run_vascsim("render '" + run + "'" + still, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("the run failed"), std::string::npos) << r.err;
+  EXPECT_NE(testing::read_bytes(dir / "still.png"), failed_still);
 }
 
 // A summary names the scene its run ran (provenance.scene_hash), as the log does: another run's

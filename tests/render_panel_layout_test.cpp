@@ -29,7 +29,7 @@ Painted paint_at(const std::string& run, int width, int height) {
   view.height = height;
   FrameState state;
   source.frame(source.frame_count() - 1, state);
-  FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state);
+  FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state, {source.failed_at(), std::nullopt});
   Canvas canvas(width, height);
   painter.paint(canvas, state, {});
   return {painter.panel_items(), painter.hud_fields()};
@@ -48,11 +48,16 @@ std::size_t count(const std::vector<FramePainter::PanelItem>& items, const std::
 TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
   ScratchDir dir("panel_layout");
   const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  // A failed run's HUD has a row more (render_failed_run_test.cpp).
+  const std::string failed = testing::make_run(dir, SyntheticLogSpec{}, "failed");
+  testing::write_bytes(failed + "/summary.json",
+                       R"({"ok": false, "failure": "Newton did not converge", "frames": 10, "simulated_time": 1.04})");
   const std::vector<std::pair<int, int>> sizes = {{1280, 720}, {640, 360}, {480, 270}, {320, 180}, {320, 240},
                                                   {640, 120}, {1200, 100}, {160, 120}, {240, 320}, {120, 90}};
+  for (const std::string& path : {run, failed})
   for (const auto& [w, h] : sizes) {
-    const auto items = panel_at(run, w, h);
-    const std::string size = std::to_string(w) + " x " + std::to_string(h);
+    const auto items = panel_at(path, w, h);
+    const std::string size = std::to_string(w) + " x " + std::to_string(h) + (path == failed ? " (failed run)" : "");
     ASSERT_FALSE(items.empty()) << size;
     EXPECT_STREQ(items.front().what, "hud") << size;
     for (std::size_t k = 0; k < items.size(); ++k) {
@@ -68,10 +73,11 @@ TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
   }
   // The HUD's labels and values never run into each other: a 200 x 600 portrait frame wrote
   // "Magnetic forc1.88 mN"; narrow cards shorten the labels, and drop them only when nothing fits.
+  for (const std::string& path : {run, failed})
   for (const auto& [w, h] : std::vector<std::pair<int, int>>{{1280, 720}, {200, 600}, {120, 400}, {160, 120}, {60, 400}}) {
-    const std::string size = std::to_string(w) + " x " + std::to_string(h);
-    const auto hud = paint_at(run, w, h).hud;
-    ASSERT_EQ(hud.size(), 4u) << size;
+    const std::string size = std::to_string(w) + " x " + std::to_string(h) + (path == failed ? " (failed run)" : "");
+    const auto hud = paint_at(path, w, h).hud;
+    ASSERT_EQ(hud.size(), path == failed ? 5u : 4u) << size;
     for (const auto& field : hud) {
       EXPECT_GE(field.value_left, 0.0f) << size;
       if (*field.label) {

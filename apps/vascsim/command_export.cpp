@@ -67,7 +67,7 @@ int run_export_command(int argc, char** argv) {
   const FrameLogReader log(log_path);
   const std::string& run = args.positional().front();
   for (const std::string& warning :
-       check_log_against_run(run, log.frame_count(), read_log_metadata(log.header().metadata, log_path).scene_hash))
+       check_log_against_run(run, log.frame_count(), read_log_metadata(log.header().metadata, log_path).scene_hash).warnings)
     std::fprintf(stderr, "vascsim export: %s\n", warning.c_str());
   const auto files = export_csv(log, *dir, options);
   std::printf("wrote %zu CSV file%s to %s\n", files.size(), files.size() == 1 ? "" : "s", dir->c_str());

@@ -102,7 +102,7 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
 namespace {
 
 // A summary saying its run failed: what is made from the log (a video, a still, a CSV) ends with
-// the last frame before the failure and does not say so itself.
+// the last frame before the failure.
 std::string failure_warning(const json& summary, const std::string& summary_path) {
   const auto ok = summary.find("ok");
   if (ok == summary.end() || !ok->is_boolean() || ok->get<bool>()) return "";
@@ -114,16 +114,16 @@ std::string failure_warning(const json& summary, const std::string& summary_path
 
 }  // namespace
 
-std::vector<std::string> check_log_against_run(const std::string& run_path, std::size_t log_frames,
-                                               const std::string& log_scene_hash) {
+LogRunCheck check_log_against_run(const std::string& run_path, std::size_t log_frames,
+                                  const std::string& log_scene_hash) {
   namespace fs = std::filesystem;
-  std::vector<std::string> warnings;
+  LogRunCheck check;
   const auto warn = [&](const std::string& warning) {
-    if (!warning.empty()) warnings.push_back(warning);
+    if (!warning.empty()) check.warnings.push_back(warning);
   };
   warn(incomplete_run_warning(run_path));
   const std::string run_dir = run_dir_of(run_path);
-  if (run_dir.empty()) return warnings;
+  if (run_dir.empty()) return check;
   const fs::path log_path = fs::path(run_dir) / "frames.vlog", summary_path = fs::path(run_dir) / "summary.json";
   const std::string not_checked = ", so " + log_path.string() + " was not checked against it (its own checks still apply)";
   std::optional<json> summary;
@@ -131,12 +131,12 @@ std::vector<std::string> check_log_against_run(const std::string& run_path, std:
     summary = read_run_summary(run_dir);
   } catch (const InputError& e) {
     warn(std::string("warning: ") + e.what() + not_checked);
-    return warnings;
+    return check;
   }
-  if (!summary) return warnings;
+  if (!summary) return check;
   if (!summary->is_object()) {
     warn("warning: " + summary_path.string() + ": not a JSON object" + not_checked);
-    return warnings;
+    return check;
   }
   const json::json_pointer hash_pointer("/provenance/scene_hash");
   if (summary->contains(hash_pointer) && (*summary)[hash_pointer].is_string()) {
@@ -153,8 +153,13 @@ std::vector<std::string> check_log_against_run(const std::string& run_path, std:
     throw InputError(log_path.string() + ": " + std::to_string(log_frames) + " frames, but " + summary_path.string() +
                      " says the run wrote " + std::to_string(frames->get<std::uint64_t>()) +
                      ": the log was cut or appended to after the run ended (run it again, or copy it again)");
-  warn(failure_warning(*summary, summary_path.string()));
-  return warnings;
+  const std::string failure = failure_warning(*summary, summary_path.string());
+  if (!failure.empty()) {
+    warn(failure);
+    const auto reached = summary->find("simulated_time");
+    check.failed_at = reached != summary->end() && reached->is_number() ? reached->get<double>() : std::nan("");
+  }
+  return check;
 }
 
 }  // namespace vascsim

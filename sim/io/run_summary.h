@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,14 @@
 namespace vascsim {
 
 std::string run_summary_json(const Scene& scene, const Run& run);
+
+// What check_log_against_run found: the warnings, each a line, and whether the run failed.
+struct LogRunCheck {
+  std::vector<std::string> warnings;
+  // The summary says the run failed: the time it had reached (s, the summary's
+  // /simulated_time; NaN where it gives none). Pictures of the run say so.
+  std::optional<double> failed_at;
+};
 
 // What a reader of a run's log (`run_path`: the run directory, or a log file) must know of its
 // run, from the run directory's summary.json, read once. Throws InputError if the log holds
@@ -21,8 +30,8 @@ std::string run_summary_json(const Scene& scene, const Run& run);
 // directory has no summary (the run stopped or is still writing, so its log may end early); the
 // summary cannot be read or has no frame count (damaged, hand-written, another version's), so the
 // log was not checked against it; the run failed (what is made from its log ends with the last
-// frame before the failure and does not say so itself). None for a log copied out of its run.
-[[nodiscard]] std::vector<std::string> check_log_against_run(const std::string& run_path, std::size_t log_frames,
-                                                             const std::string& log_scene_hash);
+// frame before the failure). None for a log copied out of its run.
+[[nodiscard]] LogRunCheck check_log_against_run(const std::string& run_path, std::size_t log_frames,
+                                               const std::string& log_scene_hash);
 
 }  // namespace vascsim

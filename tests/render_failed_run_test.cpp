@@ -1,0 +1,193 @@
+// A picture of a failed run says so: its HUD ends with a red "Run failed" row giving the time the
+// run had reached (its summary.json's /simulated_time), on every frame, so a reviewer who sees a
+// video or a still without the warnings `vascsim render` printed does not take its last frame
+// for where the run ended of its own accord. The rest of the picture is the same as a finished
+// run's.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "render/canvas.h"
+#include "render/frame_painter.h"
+#include "render/frame_source.h"
+#include "render/view_frame.h"
+#include "render_test_util.h"
+
+namespace vascsim::render {
+namespace {
+
+using testing::ScratchDir;
+
+// The summary `vascsim run` writes, reduced to what a reader checks; `ok` and the time reached as
+// given ("" leaves the time out, as a hand-edited summary may).
+void write_summary(const std::string& run, int frames, bool ok, const std::string& simulated_time) {
+  std::string summary = R"({"format": "vascsim-summary/1", "ok": )" + std::string(ok ? "true" : "false") +
+                        R"(, "failure": )" + (ok ? "null" : R"("Newton did not converge")") +
+                        ", \"frames\": " + std::to_string(frames);
+  if (!simulated_time.empty()) summary += ", \"simulated_time\": " + simulated_time;
+  testing::write_bytes(run + "/summary.json", summary + "}\n");
+}
+
+struct Picture {
+  std::vector<std::uint8_t> rgba;
+  std::vector<FramePainter::PanelItem> items;
+  std::vector<FramePainter::HudField> hud;
+  float map_right = 0;  // px, where the side panel starts
+};
+
+Picture paint_last_frame(const std::string& run, int width, int height) {
+  FrameSource source(run);
+  View view;
+  view.width = width;
+  view.height = height;
+  FrameState state;
+  source.frame(source.frame_count() - 1, state);
+  FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state, {source.failed_at(), std::nullopt});
+  Canvas canvas(width, height);
+  painter.paint(canvas, state, {});
+  Picture p;
+  p.rgba.resize(static_cast<std::size_t>(width) * height * 4);
+  canvas.finish(p.rgba.data());
+  p.items = painter.panel_items();
+  p.hud = painter.hud_fields();
+  p.map_right = width;
+  for (const auto& item : p.items) p.map_right = std::min(p.map_right, item.left);
+  return p;
+}
+
+// Pixels of the failure row's red (#C92A2A, green and blue equal), alone or anti-aliased on the
+// white panel, in a box; not the orange of contact arrows (#E8590C) nor grey text.
+int red_pixels(const std::vector<std::uint8_t>& rgba, int width, float left, float right, float top, float bottom) {
+  int n = 0;
+  for (int y = std::max(0, static_cast<int>(top)); y < static_cast<int>(bottom); ++y)
+    for (int x = std::max(0, static_cast<int>(left)); x < static_cast<int>(right); ++x) {
+      const std::uint8_t* px = &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
+      n += px[0] - std::max(px[1], px[2]) > 60 && std::abs(px[1] - px[2]) < 16;
+    }
+  return n;
+}
+
+TEST(RenderFailedRun, TheTimeTheRunReachedComesFromItsSummary) {
+  ScratchDir dir("failed_run_source");
+  SyntheticLogSpec spec;
+  const std::string run = testing::make_run(dir, spec);
+  EXPECT_FALSE(FrameSource(run).failed_at()) << "a run without a summary is not known to have failed";
+  write_summary(run, spec.frames, true, "1.0");
+  EXPECT_FALSE(FrameSource(run).failed_at());
+  write_summary(run, spec.frames, false, "1.0375");
+  ASSERT_TRUE(FrameSource(run).failed_at());
+  EXPECT_EQ(*FrameSource(run).failed_at(), 1.0375);
+  // Without the time, the run failed after its last logged frame.
+  write_summary(run, spec.frames, false, "");
+  ASSERT_TRUE(FrameSource(run).failed_at());
+  EXPECT_EQ(*FrameSource(run).failed_at(), spec.duration);
+}
+
+TEST(RenderFailedRun, TheHudSaysTheRunFailedAndNothingElseChanges) {
+  ScratchDir dir("failed_run_hud");
+  SyntheticLogSpec spec;
+  const std::string run = testing::make_run(dir, spec);
+  const int w = 1280, h = 720;
+  write_summary(run, spec.frames, true, "1.0");
+  const Picture finished = paint_last_frame(run, w, h);
+  write_summary(run, spec.frames, false, "1.0375");
+  const Picture failed = paint_last_frame(run, w, h);
+
+  ASSERT_EQ(finished.hud.size(), 4u);
+  ASSERT_EQ(failed.hud.size(), 5u);
+  EXPECT_STREQ(failed.hud.back().label, "Run failed");
+  ASSERT_FALSE(failed.items.empty());
+  ASSERT_STREQ(failed.items.front().what, "hud");
+  ASSERT_STREQ(finished.items.front().what, "hud");
+  const auto& hud = failed.items.front();
+  // The HUD grew by its new row, and the row is red; the finished run's HUD has no red at all.
+  EXPECT_GT(hud.bottom, finished.items.front().bottom + 0.5f * (finished.items.front().bottom - finished.items.front().top) / 4);
+  const float row_top = hud.bottom - 0.3f * (hud.bottom - hud.top);
+  EXPECT_GT(red_pixels(failed.rgba, w, hud.left, hud.right, row_top, hud.bottom), 50);
+  const auto& plain = finished.items.front();
+  EXPECT_EQ(red_pixels(finished.rgba, w, plain.left, plain.right, plain.top, plain.bottom), 0);
+  // The map is the finished run's, pixel for pixel.
+  ASSERT_EQ(failed.map_right, finished.map_right);
+  ASSERT_GT(failed.map_right, 0.5f * w);
+  std::size_t differing = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < static_cast<int>(failed.map_right) - 2; ++x)
+      for (int k = 0; k < 4; ++k) {
+        const std::size_t i = (static_cast<std::size_t>(y) * w + x) * 4 + k;
+        differing += failed.rgba[i] != finished.rgba[i];
+      }
+  EXPECT_EQ(differing, 0u);
+}
+
+// Narrow frames carry the HUD on a card above the map: the card grows by the row, so the row
+// lies on the card and the map starts below it.
+TEST(RenderFailedRun, TheNarrowFramesCardHoldsTheRow) {
+  ScratchDir dir("failed_run_card");
+  SyntheticLogSpec spec;
+  const std::string run = testing::make_run(dir, spec);
+  write_summary(run, spec.frames, false, "0.5");
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{480, 640}, {360, 360}, {160, 120}}) {
+    const Picture p = paint_last_frame(run, w, h);
+    const std::string size = std::to_string(w) + " x " + std::to_string(h);
+    ASSERT_EQ(p.hud.size(), 5u) << size;
+    ASSERT_FALSE(p.items.empty()) << size;
+    const auto& hud = p.items.front();
+    EXPECT_LE(hud.bottom, static_cast<float>(h)) << size;
+    const float row_top = hud.bottom - 0.3f * (hud.bottom - hud.top);
+    EXPECT_GT(red_pixels(p.rgba, w, hud.left, hud.right, row_top, hud.bottom), 5) << size;
+  }
+}
+
+// Compare mode: a compared run that failed stops moving over the map; the HUD says why.
+TEST(RenderFailedRun, AComparedRunThatFailedIsSaidToHaveFailed) {
+  ScratchDir dir("failed_run_overlay");
+  SyntheticLogSpec spec;
+  const std::string a = testing::make_run(dir, spec, "a"), b = testing::make_run(dir, spec, "b");
+  write_summary(a, spec.frames, true, "1.0");
+  const int w = 1280, h = 720;
+  View view;
+  view.width = w;
+  view.height = h;
+  Canvas canvas(w, h);
+  const auto still_over = [&](std::vector<std::uint8_t>& rgba) {
+    FrameSource run_a(a), run_b(b);
+    ViewFrameInputs in;
+    in.source = &run_a;
+    in.peaks = measure_force_peaks(run_a);
+    in.overlay = &run_b;
+    render_view_frame(canvas, in, view, 0.5, rgba);
+  };
+  std::vector<std::uint8_t> over_finished, over_failed;
+  write_summary(b, spec.frames, true, "1.0");
+  still_over(over_finished);
+  write_summary(b, spec.frames, false, "0.75");
+  still_over(over_failed);
+  // The two stills differ only in the side panel, where the failed one gained red text.
+  int first_column = w;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int k = 0; k < 4; ++k) {
+        const std::size_t i = (static_cast<std::size_t>(y) * w + x) * 4 + k;
+        if (over_failed[i] != over_finished[i]) first_column = std::min(first_column, x);
+      }
+  EXPECT_GT(first_column, w / 2) << "the map changed";
+  EXPECT_LT(first_column, w) << "the picture did not change";
+  EXPECT_EQ(red_pixels(over_finished, w, first_column, w, 0, h / 3.0f), 0);
+  EXPECT_GT(red_pixels(over_failed, w, first_column, w, 0, h / 3.0f), 50);
+
+  // The row's label names the compared run.
+  FrameSource run_a(a);
+  FrameState state, other;
+  run_a.frame(0, state);
+  FrameSource(b).at_time(0.5, other);
+  FramePainter painter(run_a.metadata(), view, choose_force_scales(run_a, view), state, {std::nullopt, 0.75});
+  painter.paint(canvas, state, {}, &other);
+  ASSERT_EQ(painter.hud_fields().size(), 5u);
+  EXPECT_STREQ(painter.hud_fields().back().label, "Compared run failed");
+}
+
+}  // namespace
+}  // namespace vascsim::render
