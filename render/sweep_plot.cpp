@@ -25,8 +25,9 @@ constexpr Rgba kRun = hex(0x4C6EF5, 0.55f);    // one run
 constexpr Rgba kRange = hex(0x868E96);         // min-max bar
 constexpr Rgba kMean = hex(0xF08C00);          // mean line
 constexpr Rgba kFailed = hex(0xE03131);        // failed or missing counts
+constexpr float kMaxDotSpreadPx = 40;          // the width a value's run dots spread over, at most
 
-// The smallest gap between neighbouring positions: dots spread over a share of it.
+// The smallest gap between neighbouring positions: the axis's margins and the dots' spread.
 double spacing_of(std::vector<double> x) {
   std::sort(x.begin(), x.end());
   double gap = std::numeric_limits<double>::infinity();
@@ -70,11 +71,14 @@ void draw_panel(Canvas& c, const SweepFigure& f, const SweepPanel& p) {
       const auto [mn, mx] = std::minmax_element(vs.begin(), vs.end());
       c.capsule(a.map(f.x[j], *mn), a.map(f.x[j], *mx), 1.5f, kRange);
       double sum = 0;
+      // Spread sideways in run order (deterministic, and a stack of equal values still shows
+      // how many runs it holds) over at most 40 px: a share of the gap between values put the
+      // dots of two values a fifth of the axis apart, where a numeric axis reads other values.
+      const float centre = a.map(f.x[j], a.ymin).x;
+      const float spread = std::min(kMaxDotSpreadPx, 0.4f * (a.map(f.x[j] + spacing, a.ymin).x - centre));
       for (std::size_t k = 0; k < vs.size(); ++k) {
-        // Spread sideways over 40 % of the spacing, in run order: deterministic, and a stack of
-        // equal values still shows how many runs it holds.
-        const double dx = vs.size() > 1 ? (static_cast<double>(k) / static_cast<double>(vs.size() - 1) - 0.5) * 0.4 * spacing : 0.0;
-        c.disc(a.map(f.x[j] + dx, vs[k]), 4.0f, kRun);
+        const float dx = vs.size() > 1 ? (static_cast<float>(k) / static_cast<float>(vs.size() - 1) - 0.5f) * spread : 0.0f;
+        c.disc({centre + dx, a.map(f.x[j], vs[k]).y}, 4.0f, kRun);
         sum += vs[k];
       }
       means.push_back(a.map(f.x[j], sum / static_cast<double>(vs.size())));
