@@ -32,7 +32,8 @@ int require_layout(const FrameLogHeader& h, const char* name, ChannelLayout layo
 
 }  // namespace
 
-FrameSource::FrameSource(const std::string& run_path) : log_path_(frame_log_path(run_path)), reader_(log_path_) {
+FrameSource::FrameSource(const std::string& run_path)
+    : run_path_(run_path), log_path_(frame_log_path(run_path)), reader_(log_path_) {
   const FrameLogHeader& h = reader_.header();
   metadata_ = read_log_metadata(h.metadata, log_path_);
   position_ = require_layout(h, channel::kPosition, ChannelLayout::kNodeVectors, log_path_);
@@ -46,12 +47,17 @@ FrameSource::FrameSource(const std::string& run_path) : log_path_(frame_log_path
   tip_error_ = require_layout(h, channel::kTipError, ChannelLayout::kScalars, log_path_);
   frame_count_ = reader_.frame_count();
   if (frame_count_ == 0) throw InputError(log_path_ + ": frame log has no complete frame");
-  LogRunCheck check = check_log_against_run(run_path, frame_count_, metadata_.scene_hash);
-  warnings_ = std::move(check.warnings);
   first_time_ = checked_time(0);
   last_time_ = checked_time(frame_count_ - 1);
   if (last_time_ < first_time_) throw bad_time(frame_count_ - 1, last_time_, "before the first frame's time");
+  recheck_run();
+}
+
+void FrameSource::recheck_run() {
+  LogRunCheck check = check_log_against_run(run_path_, frame_count_, metadata_.scene_hash);
+  warnings_ = std::move(check.warnings);
   // A summary without the time reached (hand-edited) still marks the run failed, after its log.
+  failed_at_.reset();
   if (check.failed_at) failed_at_ = std::isfinite(*check.failed_at) ? *check.failed_at : last_time_;
 }
 

@@ -94,6 +94,10 @@ class FrameSource {
   // Re-polls the log for frames appended since (a run still writing it). Returns true if the
   // frame count changed.
   bool refresh();
+  // Checks the log against its run again, as on opening: once the summary of a run that was
+  // still writing has appeared, warnings() and failed_at() are the ended run's. Throws as the
+  // constructor does (a summary counting other frames than the log holds).
+  void recheck_run();
   // The log's path now names another file, or the log holds fewer frames than it did (cut, or
   // written over in place): this source's frames are no longer the run's.
   bool replaced() const { return reader_.replaced() || reader_.frame_count() < frame_count_; }
@@ -105,6 +109,7 @@ class FrameSource {
   double checked_time(std::size_t i) const;
   InputError bad_time(std::size_t i, double t, const char* why) const;
 
+  std::string run_path_;  // as given: the run directory, or a log file
   std::string log_path_;
   FrameLogReader reader_;
   LogMetadata metadata_;

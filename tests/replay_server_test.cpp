@@ -404,6 +404,35 @@ TEST(ReplayServer, LiveFollowSeesFramesAppendedAfterStart) {
   EXPECT_EQ(get_json(s, "/api/run")["frames"], 12);
 }
 
+// A run watched live that then fails: once its summary appears, the map's HUD says it failed,
+// as `vascsim render`'s pictures of it do (the same PNG bytes).
+TEST(ReplayServer, ALiveRunThatFailsIsSaidToHaveFailedOnceItsSummaryAppears) {
+  ScratchDir dir("replay_live_failed");
+  const std::string run = dir / "run";
+  fs::create_directories(run);
+  render::SyntheticLogSpec spec;
+  FrameLogHeader header;
+  header.node_count = 3;
+  header.channels = {{channel::kPosition, "m", ChannelLayout::kNodeVectors, 6}};
+  header.metadata = write_log_metadata(render::synthetic_metadata(spec));
+  FrameLogWriter writer(run + "/frames.vlog", header);
+  for (int k = 0; k < 12; ++k) writer.append(0.1 * k, {0.0, 0.0, 0.001 * k, 0.0, 0.002 * k, 0.001});
+  writer.close();
+  LiveServer s({{run}});
+  const std::string frame = "/api/frame.png?t=1&width=320&height=180";
+  const auto running = s.get(frame);
+  ASSERT_EQ(running->status, 200);
+  vascsim::test::write_text(run + "/summary.json", R"({"format": "vascsim-summary/1", "ok": false,
+      "failure": "Newton did not converge", "frames": 12, "simulated_time": 1.13})");
+  EXPECT_EQ(get_json(s, "/api/run")["summary"]["ok"], false);
+  const auto ended = s.get(frame);
+  ASSERT_EQ(ended->status, 200);
+  EXPECT_NE(ended->body, running->body) << "the HUD does not say the run failed";
+  const std::string png = dir / "still.png";
+  ASSERT_EQ(vascsim::test::run_vascsim("render " + run + " --still 1 --width 320 --height 180 --png " + png).exit_code, 0);
+  EXPECT_TRUE(ended->body == vascsim::test::read_text(png)) << "the frame differs from the still of the failed run";
+}
+
 // A run that failed replays up to its last frame, with the failure marked on the timeline.
 TEST(ReplayServer, AFailedRunReplaysToItsLastFrame) {
   ScratchDir dir("replay_failed");

@@ -75,6 +75,13 @@ void ReplayRun::refresh() {
   }
   growing_ = false;
   source_->refresh();
+  // The run has ended: the pictures of one that failed say so from now on, as `vascsim render`'s do.
+  try {
+    source_->recheck_run();
+  } catch (const InputError&) {
+    // A summary counting other frames than the log (appended to): the served run keeps to the
+    // frames it had, and its pictures to what was known when it was opened.
+  }
 }
 
 json ReplayRun::info() const {
