@@ -15,6 +15,7 @@ namespace {
 
 using palette::kActuation;
 using palette::kContact;
+using palette::kFailure;
 using palette::kInk;
 
 // The palette: a light, calm page; the lumen a pale tissue tone bounded by dark walls; the rod
@@ -33,7 +34,6 @@ constexpr Rgba kGoal = hex(0xC92A2A);
 constexpr Rgba kPanel = hex(0xFFFFFF);
 constexpr Rgba kPanelEdge = hex(0xD0D5DB);
 constexpr Rgba kMuted = hex(0x5F6B76);
-constexpr Rgba kFailure = hex(0xC92A2A);  // the HUD's "Run failed" row
 
 glm::vec2 apply(const glm::dmat3& m, Vec2 p) {
   const glm::dvec3 q = m * glm::dvec3(p.x(), p.y(), 1.0);

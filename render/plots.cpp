@@ -19,6 +19,7 @@ namespace {
 
 using palette::kActuation;
 using palette::kContact;
+using palette::kFailure;
 using palette::kInk;
 
 constexpr Rgba kGrid = hex(0xE3E6EA);
@@ -251,6 +252,15 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   const DisplayUnit fu = force_unit(std::max(max_act, max_con));
   const std::string force_label = std::string("force (") + fu.name + ")";
   const double to_mm = 1e3;
+  // A failed run's plots say so in their top margin, as its video's HUD does.
+  const auto finish = [&](const char* name) {
+    if (const auto failed_at = source.failed_at()) {
+      char note[96];
+      std::snprintf(note, sizeof note, "Run failed at %.3f s: the plots end with its last logged frame", *failed_at);
+      c.text(note, {0.02f * static_cast<float>(width), 1.4f * static_cast<float>(font)}, font, kFailure);
+    }
+    save(c, (fs::path(dir) / name).string(), force, written);
+  };
 
   {  // Tip trajectory against the reference, with actuation arrows (paper Fig. 11).
     c.clear(white);
@@ -287,7 +297,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     }
     draw_frame(c, a, "x (mm)", "y (mm)", "Tip trajectory and magnetic force", white);
     legend(c, a, entries, font, true);
-    save(c, (fs::path(dir) / "tip_trajectory.png").string(), force, written);
+    finish("tip_trajectory.png");
   }
   {  // Actuation force over time (Fig. 12).
     c.clear(white);
@@ -311,7 +321,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
       legend(c, a, {{kActuation, "|F|"}, {kSecondary, "Fx"}, {kTertiary, "Fy"}}, font);
     else
       no_data(c, a, "actuation force", font);
-    save(c, (fs::path(dir) / "actuation_force.png").string(), force, written);
+    finish("actuation_force.png");
   }
   {  // Whole-body snapshots with contact arrows (Fig. 14).
     c.clear(white);
@@ -365,7 +375,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     }
     draw_frame(c, a, "x (mm)", "y (mm)", "Rod snapshots and contact forces", white);
     legend(c, a, entries, font, true);
-    save(c, (fs::path(dir) / "snapshots.png").string(), force, written);
+    finish("snapshots.png");
   }
   {  // Tracking error over time.
     c.clear(white);
@@ -379,7 +389,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     if (s.has_error) plot_line(c, a, s.t, e, 2.5f, kPath);
     draw_frame(c, a, "time (s)", "tip error (mm)", "Tracking error: distance from tip to reference", white);
     if (!s.has_error) no_data(c, a, "tracking error", font);
-    save(c, (fs::path(dir) / "tracking_error.png").string(), force, written);
+    finish("tracking_error.png");
   }
   {  // Contact force over time.
     c.clear(white);
@@ -401,7 +411,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
       legend(c, a, {{kContact, "largest on one node"}, {kSecondary, "sum over nodes"}}, font);
     else
       no_data(c, a, "contact force", font);
-    save(c, (fs::path(dir) / "contact_force.png").string(), force, written);
+    finish("contact_force.png");
   }
   return written;
 }
