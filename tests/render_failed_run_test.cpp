@@ -13,7 +13,9 @@
 #include "render/canvas.h"
 #include "render/frame_painter.h"
 #include "render/frame_source.h"
+#include "render/plots.h"
 #include "render/view_frame.h"
+#include "sim/io/png_file.h"
 #include "render_test_util.h"
 
 namespace vascsim::render {
@@ -29,33 +31,6 @@ void write_summary(const std::string& run, int frames, bool ok, const std::strin
                         ", \"frames\": " + std::to_string(frames);
   if (!simulated_time.empty()) summary += ", \"simulated_time\": " + simulated_time;
   testing::write_bytes(run + "/summary.json", summary + "}\n");
-}
-
-struct Picture {
-  std::vector<std::uint8_t> rgba;
-  std::vector<FramePainter::PanelItem> items;
-  std::vector<FramePainter::HudField> hud;
-  float map_right = 0;  // px, where the side panel starts
-};
-
-Picture paint_last_frame(const std::string& run, int width, int height) {
-  FrameSource source(run);
-  View view;
-  view.width = width;
-  view.height = height;
-  FrameState state;
-  source.frame(source.frame_count() - 1, state);
-  FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state, {source.failed_at(), std::nullopt});
-  Canvas canvas(width, height);
-  painter.paint(canvas, state, {});
-  Picture p;
-  p.rgba.resize(static_cast<std::size_t>(width) * height * 4);
-  canvas.finish(p.rgba.data());
-  p.items = painter.panel_items();
-  p.hud = painter.hud_fields();
-  p.map_right = width;
-  for (const auto& item : p.items) p.map_right = std::min(p.map_right, item.left);
-  return p;
 }
 
 // Pixels of the failure row's red (#C92A2A, green and blue equal), alone or anti-aliased on the
@@ -92,9 +67,9 @@ TEST(RenderFailedRun, TheHudSaysTheRunFailedAndNothingElseChanges) {
   const std::string run = testing::make_run(dir, spec);
   const int w = 1280, h = 720;
   write_summary(run, spec.frames, true, "1.0");
-  const Picture finished = paint_last_frame(run, w, h);
+  const testing::PaintedFrame finished = testing::paint_last_frame(run, w, h);
   write_summary(run, spec.frames, false, "1.0375");
-  const Picture failed = paint_last_frame(run, w, h);
+  const testing::PaintedFrame failed = testing::paint_last_frame(run, w, h);
 
   ASSERT_EQ(finished.hud.size(), 4u);
   ASSERT_EQ(failed.hud.size(), 5u);
@@ -109,12 +84,12 @@ TEST(RenderFailedRun, TheHudSaysTheRunFailedAndNothingElseChanges) {
   EXPECT_GT(red_pixels(failed.rgba, w, hud.left, hud.right, row_top, hud.bottom), 50);
   const auto& plain = finished.items.front();
   EXPECT_EQ(red_pixels(finished.rgba, w, plain.left, plain.right, plain.top, plain.bottom), 0);
-  // The map is the finished run's, pixel for pixel.
-  ASSERT_EQ(failed.map_right, finished.map_right);
-  ASSERT_GT(failed.map_right, 0.5f * w);
+  // The map (left of the side panel's text) is the finished run's, pixel for pixel.
+  const float panel_text_left = std::min(plain.left, hud.left);
+  ASSERT_GT(panel_text_left, 0.5f * w);
   std::size_t differing = 0;
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < static_cast<int>(failed.map_right) - 2; ++x)
+    for (int x = 0; x < static_cast<int>(panel_text_left) - 2; ++x)
       for (int k = 0; k < 4; ++k) {
         const std::size_t i = (static_cast<std::size_t>(y) * w + x) * 4 + k;
         differing += failed.rgba[i] != finished.rgba[i];
@@ -130,7 +105,7 @@ TEST(RenderFailedRun, TheNarrowFramesCardHoldsTheRow) {
   const std::string run = testing::make_run(dir, spec);
   write_summary(run, spec.frames, false, "0.5");
   for (const auto& [w, h] : std::vector<std::pair<int, int>>{{480, 640}, {360, 360}, {160, 120}}) {
-    const Picture p = paint_last_frame(run, w, h);
+    const testing::PaintedFrame p = testing::paint_last_frame(run, w, h);
     const std::string size = std::to_string(w) + " x " + std::to_string(h);
     ASSERT_EQ(p.hud.size(), 5u) << size;
     ASSERT_FALSE(p.items.empty()) << size;
@@ -187,6 +162,32 @@ TEST(RenderFailedRun, AComparedRunThatFailedIsSaidToHaveFailed) {
   painter.paint(canvas, state, {}, &other);
   ASSERT_EQ(painter.hud_fields().size(), 5u);
   EXPECT_STREQ(painter.hud_fields().back().label, "Compared run failed");
+}
+
+// The plots of a failed run say so in red in their top margin; a finished run's have no red there.
+TEST(RenderFailedRun, ThePlotsSayTheRunFailed) {
+  ScratchDir dir("failed_run_plots");
+  SyntheticLogSpec spec;
+  const std::string run = testing::make_run(dir, spec);
+  const int w = 1200, h = 800;
+  const auto plots_of = [&](const std::string& name) {
+    const auto paths = write_plots(FrameSource(run), dir / name, false);
+    std::vector<io::PngPixels> images;
+    for (const std::string& path : paths) images.push_back(io::read_png(path, 4));
+    return images;
+  };
+  write_summary(run, spec.frames, true, "1.0");
+  const auto finished = plots_of("finished");
+  write_summary(run, spec.frames, false, "1.0375");
+  const auto failed = plots_of("failed");
+  ASSERT_EQ(finished.size(), failed.size());
+  ASSERT_EQ(failed.size(), 5u);
+  for (std::size_t i = 0; i < failed.size(); ++i) {
+    ASSERT_EQ(failed[i].width, w);
+    // The margin above the title (the upper half of the 9 % above the axes).
+    EXPECT_EQ(red_pixels(finished[i].data, w, 0, w, 0, 0.045f * h), 0) << "plot " << i;
+    EXPECT_GT(red_pixels(failed[i].data, w, 0, w, 0, 0.045f * h), 100) << "plot " << i;
+  }
 }
 
 }  // namespace

@@ -17,26 +17,8 @@ namespace {
 
 using testing::ScratchDir;
 
-struct Painted {
-  std::vector<FramePainter::PanelItem> items;
-  std::vector<FramePainter::HudField> hud;
-};
-
-Painted paint_at(const std::string& run, int width, int height) {
-  FrameSource source(run);
-  View view;
-  view.width = width;
-  view.height = height;
-  FrameState state;
-  source.frame(source.frame_count() - 1, state);
-  FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state, {source.failed_at(), std::nullopt});
-  Canvas canvas(width, height);
-  painter.paint(canvas, state, {});
-  return {painter.panel_items(), painter.hud_fields()};
-}
-
 std::vector<FramePainter::PanelItem> panel_at(const std::string& run, int width, int height) {
-  return paint_at(run, width, height).items;
+  return testing::paint_last_frame(run, width, height).items;
 }
 
 std::size_t count(const std::vector<FramePainter::PanelItem>& items, const std::string& what) {
@@ -76,7 +58,7 @@ TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
   for (const std::string& path : {run, failed})
   for (const auto& [w, h] : std::vector<std::pair<int, int>>{{1280, 720}, {200, 600}, {120, 400}, {160, 120}, {60, 400}}) {
     const std::string size = std::to_string(w) + " x " + std::to_string(h) + (path == failed ? " (failed run)" : "");
-    const auto hud = paint_at(path, w, h).hud;
+    const auto hud = testing::paint_last_frame(path, w, h).hud;
     ASSERT_EQ(hud.size(), path == failed ? 5u : 4u) << size;
     for (const auto& field : hud) {
       EXPECT_GE(field.value_left, 0.0f) << size;

@@ -15,6 +15,9 @@
 #include <sstream>
 #include <string>
 
+#include "render/canvas.h"
+#include "render/frame_painter.h"
+#include "render/frame_source.h"
 #include "render/image_diff.h"
 #include "render/synthetic_log.h"
 
@@ -89,6 +92,31 @@ inline std::string make_run(const ScratchDir& dir, const SyntheticLogSpec& spec,
   fs::create_directories(run);
   write_synthetic_log((fs::path(run) / "frames.vlog").string(), spec);
   return run;
+}
+
+// The last frame of a run painted at width x height (the default view, the run's failure if any),
+// with what the panel drew.
+struct PaintedFrame {
+  std::vector<std::uint8_t> rgba;
+  std::vector<FramePainter::PanelItem> items;
+  std::vector<FramePainter::HudField> hud;
+};
+inline PaintedFrame paint_last_frame(const std::string& run, int width, int height) {
+  FrameSource source(run);
+  View view;
+  view.width = width;
+  view.height = height;
+  FrameState state;
+  source.frame(source.frame_count() - 1, state);
+  FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state, {source.failed_at(), std::nullopt});
+  Canvas canvas(width, height);
+  painter.paint(canvas, state, {});
+  PaintedFrame p;
+  p.rgba.resize(static_cast<std::size_t>(width) * height * 4);
+  canvas.finish(p.rgba.data());
+  p.items = painter.panel_items();
+  p.hud = painter.hud_fields();
+  return p;
 }
 
 inline void write_bytes(const std::string& path, const std::string& bytes) {

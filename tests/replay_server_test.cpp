@@ -359,18 +359,26 @@ TEST(ReplayServer, ValueAtATimeIsWhatTheFrameOfThatTimeShows) {
   ASSERT_GT((at_42 - state.reference).norm(), 1e-5);
 }
 
+// The log of a run still writing, as the live tests write it: a 3-node rod in the synthetic
+// maze, frame k at 0.1 k s.
+FrameLogHeader live_log_header() {
+  FrameLogHeader header;
+  header.node_count = 3;
+  header.channels = {{channel::kPosition, "m", ChannelLayout::kNodeVectors, 6}};
+  header.metadata = write_log_metadata(render::synthetic_metadata(render::SyntheticLogSpec{}));
+  return header;
+}
+void append_live_frame(FrameLogWriter& writer, int k) {
+  writer.append(0.1 * k, {0.0, 0.0, 0.001 * k, 0.0, 0.002 * k, 0.001});
+}
+
 // A log that a run is still writing: the server sees appended frames, then the summary.
 TEST(ReplayServer, LiveFollowSeesFramesAppendedAfterStart) {
   ScratchDir dir("replay_live");
   const std::string run = dir / "run";
   fs::create_directories(run);
-  render::SyntheticLogSpec spec;
-  FrameLogHeader header;
-  header.node_count = 3;
-  header.channels = {{channel::kPosition, "m", ChannelLayout::kNodeVectors, 6}};
-  header.metadata = write_log_metadata(render::synthetic_metadata(spec));
-  FrameLogWriter writer(run + "/frames.vlog", header);
-  auto append = [&](int k) { writer.append(0.1 * k, {0.0, 0.0, 0.001 * k, 0.0, 0.002 * k, 0.001}); };
+  FrameLogWriter writer(run + "/frames.vlog", live_log_header());
+  auto append = [&](int k) { append_live_frame(writer, k); };
   for (int k = 0; k < 5; ++k) append(k);
   LiveServer s({{run}});
   json info = get_json(s, "/api/run");
@@ -410,13 +418,8 @@ TEST(ReplayServer, ALiveRunThatFailsIsSaidToHaveFailedOnceItsSummaryAppears) {
   ScratchDir dir("replay_live_failed");
   const std::string run = dir / "run";
   fs::create_directories(run);
-  render::SyntheticLogSpec spec;
-  FrameLogHeader header;
-  header.node_count = 3;
-  header.channels = {{channel::kPosition, "m", ChannelLayout::kNodeVectors, 6}};
-  header.metadata = write_log_metadata(render::synthetic_metadata(spec));
-  FrameLogWriter writer(run + "/frames.vlog", header);
-  for (int k = 0; k < 12; ++k) writer.append(0.1 * k, {0.0, 0.0, 0.001 * k, 0.0, 0.002 * k, 0.001});
+  FrameLogWriter writer(run + "/frames.vlog", live_log_header());
+  for (int k = 0; k < 12; ++k) append_live_frame(writer, k);
   writer.close();
   LiveServer s({{run}});
   const std::string frame = "/api/frame.png?t=1&width=320&height=180";
