@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "render/frame_painter.h"
+#include "render/label_placer.h"
 #include "render/number_format.h"
 #include "render/palette.h"
 #include "render/png_writer.h"
@@ -342,6 +343,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     if (typical > 0) entries.back().second = contact_entry(nominal);
     const int label_font = static_cast<int>(0.8 * font);
     FrameState f;
+    LabelPlacer labels({{a.left, a.top}, {a.right, a.bottom}});
     for (int k = 0; k < kSnapshots; ++k) {
       const std::size_t i = frames.first + (frames.last - frames.first) * static_cast<std::size_t>(k) / (kSnapshots - 1);
       source.frame(i, f);
@@ -370,8 +372,16 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
         at = {ahead.x >= 0 ? tip.x : tip.x - w, tip.y + 0.35f * h};
       else
         at = {tip.x - 0.5f * w, ahead.y > 0 ? tip.y + h : tip.y - 0.3f * h};
-      c.box(at + glm::vec2(-3, -1.05f * h), at + glm::vec2(w + 3, 0.35f * h), hex(0xFFFFFF, 0.8f), 3);
-      c.text(label, at, label_font, kInk);
+      // Moved up or down off the labels before it (a rod that hardly moved puts every tip on one
+      // spot), with a leader back to its tip.
+      const LabelBox wanted{at + glm::vec2(-3, -1.05f * h), at + glm::vec2(w + 3, 0.35f * h)};
+      const LabelBox box = labels.place(wanted);
+      if (box.min.y != wanted.min.y) {
+        const glm::vec2 end(std::clamp(tip.x, box.min.x, box.max.x), std::clamp(tip.y, box.min.y, box.max.y));
+        c.polyline({pts.back(), end}, 1.0f, hex(0x868E96));
+      }
+      c.box(box.min, box.max, hex(0xFFFFFF, 0.8f), 3);
+      c.text(label, box.min + glm::vec2(3, 1.05f * h), label_font, kInk);
     }
     draw_frame(c, a, "x (mm)", "y (mm)", "Rod snapshots and contact forces", white);
     legend(c, a, entries, font, true);
