@@ -137,7 +137,8 @@ void draw_walls(Canvas& c, const Axes& a, const LogMetadata& m, double to_mm) {
 
 // The axes of a map plot. Its legend (legend_box px wide) goes beside the map where that leaves
 // the map at least half the width; otherwise inside, and the map keeps the whole width.
-Axes map_axes(const Canvas& c, const FrameSource& source, const Series& s, double to_mm, float legend_box) {
+Axes map_axes(const Canvas& c, const FrameSource& source, const Series& s, double to_mm, float legend_box,
+              const std::vector<FrameState>& shown = {}) {
   Axes a = plot_area(c);
   const float beside = c.width() - legend_box - 30.0f;  // 20 px gap, 10 px margin
   if (beside >= 0.5f * c.width()) a.right = std::min(a.right, beside);
@@ -149,6 +150,8 @@ Axes map_axes(const Canvas& c, const FrameSource& source, const Series& s, doubl
       for (const Vec2& corner : {Vec2(-1, -1), Vec2(1, 1)}) add(end + 0.5 * w.thickness * corner);
   for (const auto& p : m.path) add(p);
   for (const auto& p : s.tip) add(p);
+  for (const FrameState& f : shown)
+    for (std::size_t n = 0; n < f.node_count(); ++n) add(f.node(n));
   fit_range(xs, a.xmin, a.xmax, false);
   fit_range(ys, a.ymin, a.ymax, false);
   a.equal_aspect();
@@ -335,18 +338,21 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     };
     LegendEntries entries = {{hex(0x3B5BA5), "rod (lighter = earlier)"}};
     if (typical > 0) entries.push_back({kContact, contact_entry(999)});  // as wide as the label gets
-    Axes a = map_axes(c, source, s, to_mm, legend_width(c, entries, font));
+    // The whole rod of every snapshot is in the picture (a catheter reaches back out of the
+    // vessel through its inlet, past the walls and the path).
+    constexpr int kSnapshots = 6;
+    std::vector<FrameState> snapshots(kSnapshots);
+    for (int k = 0; k < kSnapshots; ++k)
+      source.frame(frames.first + (frames.last - frames.first) * static_cast<std::size_t>(k) / (kSnapshots - 1), snapshots[k]);
+    Axes a = map_axes(c, source, s, to_mm, legend_width(c, entries, font), snapshots);
     draw_grid(c, a);
     draw_walls(c, a, m, to_mm);
-    constexpr int kSnapshots = 6;
     const double nominal = 0.05 * (a.right - a.left), px_per_n = typical > 0 ? nominal / typical : 0;
     if (typical > 0) entries.back().second = contact_entry(nominal);
     const int label_font = static_cast<int>(0.8 * font);
-    FrameState f;
     LabelPlacer labels({{a.left, a.top}, {a.right, a.bottom}});
     for (int k = 0; k < kSnapshots; ++k) {
-      const std::size_t i = frames.first + (frames.last - frames.first) * static_cast<std::size_t>(k) / (kSnapshots - 1);
-      source.frame(i, f);
+      const FrameState& f = snapshots[k];
       const float shade = 0.25f + 0.75f * k / (kSnapshots - 1);  // later snapshots darker
       const Rgba rod{0.85f - 0.75f * shade, 0.90f - 0.65f * shade, 0.97f - 0.45f * shade, 1};
       std::vector<glm::vec2> pts;
