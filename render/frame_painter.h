@@ -2,7 +2,7 @@
 // and goal, the tip trail, the rod at its true radius, node markers, force arrows, and a panel
 // with the HUD (time, tip error, forces), the legend and a scale bar; each is a layer of the
 // View and drawn only when on. Pure drawing: it reads a FrameState and the log metadata, and
-// holds only the view and the arrow scales, fixed for a whole video.
+// holds only the view, the arrow scales and which runs failed, fixed for a whole video.
 #pragma once
 
 #include <optional>

@@ -49,8 +49,9 @@ class FrameSource {
   // output never replaces, even with --force.
   std::vector<std::string> run_files() const;
   const LogMetadata& metadata() const { return metadata_; }
-  // What a user should know about the log's run on opening it: a run without summary.json
-  // (stopped or still writing), or a summary the log could not be checked against.
+  // What a user should know about the log's run on opening it (or at the last recheck_run): a
+  // run without summary.json (stopped or still writing), a summary the log could not be checked
+  // against, or a run that failed.
   const std::vector<std::string>& warnings() const { return warnings_; }
   // The run failed (its summary says so): the time it had reached (s). Its pictures say so.
   std::optional<double> failed_at() const { return failed_at_; }

@@ -135,8 +135,9 @@ void draw_walls(Canvas& c, const Axes& a, const LogMetadata& m, double to_mm) {
               std::max(1.5f, static_cast<float>(0.5 * w.thickness * px_per_m)), kWall);
 }
 
-// The axes of a map plot. Its legend (legend_box px wide) goes beside the map where that leaves
-// the map at least half the width; otherwise inside, and the map keeps the whole width.
+// The axes of a map plot: the walls, the path, the tip's track and the whole rod of each frame
+// in `shown`. Its legend (legend_box px wide) goes beside the map where that leaves the map at
+// least half the width; otherwise inside, and the map keeps the whole width.
 Axes map_axes(const Canvas& c, const FrameSource& source, const Series& s, double to_mm, float legend_box,
               const std::vector<FrameState>& shown = {}) {
   Axes a = plot_area(c);

@@ -72,8 +72,9 @@ void draw_panel(Canvas& c, const SweepFigure& f, const SweepPanel& p) {
       c.capsule(a.map(f.x[j], *mn), a.map(f.x[j], *mx), 1.5f, kRange);
       double sum = 0;
       // Spread sideways in run order (deterministic, and a stack of equal values still shows
-      // how many runs it holds) over at most 40 px: a share of the gap between values put the
-      // dots of two values a fifth of the axis apart, where a numeric axis reads other values.
+      // how many runs it holds) over at most 40 px: spread over 40 % of the gap between values,
+      // two values' dots reached a fifth of that gap from their value, where a numeric axis
+      // reads other values.
       const float centre = a.map(f.x[j], a.ymin).x;
       const float spread = std::min(kMaxDotSpreadPx, 0.4f * (a.map(f.x[j] + spacing, a.ymin).x - centre));
       for (std::size_t k = 0; k < vs.size(); ++k) {
