@@ -17,6 +17,7 @@ namespace vascsim::render {
 
 namespace {
 
+using palette::kFailure;  // failed or missing counts
 using palette::kInk;
 
 constexpr Rgba kWhite = hex(0xFFFFFF);
@@ -24,7 +25,6 @@ constexpr Rgba kGrid = hex(0xE3E6EA);
 constexpr Rgba kRun = hex(0x4C6EF5, 0.55f);    // one run
 constexpr Rgba kRange = hex(0x868E96);         // min-max bar
 constexpr Rgba kMean = hex(0xF08C00);          // mean line
-constexpr Rgba kFailed = hex(0xE03131);        // failed or missing counts
 constexpr float kMaxDotSpreadPx = 40;          // the width a value's run dots spread over, at most
 
 // The smallest gap between neighbouring positions: the axis's margins and the dots' spread.
@@ -89,7 +89,7 @@ void draw_panel(Canvas& c, const SweepFigure& f, const SweepPanel& p) {
     // Counts only, so they fit however many values there are; the caption says what they count.
     float y = a.top + 1.3f * font;
     if (failed > 0) {
-      c.text(std::to_string(failed), {a.map(f.x[j], a.ymax).x, y}, font, kFailed, TextAlign::kCenter);
+      c.text(std::to_string(failed), {a.map(f.x[j], a.ymax).x, y}, font, kFailure, TextAlign::kCenter);
       y += 1.2f * font;
       any_failed = true;
     }
@@ -112,7 +112,7 @@ void draw_panel(Canvas& c, const SweepFigure& f, const SweepPanel& p) {
   // Under the x label, clear of the title however long it gets.
   const float caption_y = a.bottom + 4.3f * font;
   c.text(caption, {a.right, caption_y}, small, kRange, TextAlign::kRight);
-  if (any_failed) c.text("red: runs failed or missing", {a.left, caption_y}, small, kFailed, TextAlign::kLeft);
+  if (any_failed) c.text("red: runs failed or missing", {a.left, caption_y}, small, kFailure, TextAlign::kLeft);
 }
 
 }  // namespace
