@@ -900,6 +900,17 @@ def check_warnings(driver, exe, shots, workdir):
             page.ready()
             R.check(close(float(page.frame_params()['t']), want, 1e-9),
                     'warnings: Enter on a focused warning shows the frame where it first happened', f"{page.frame_params()['t']}")
+        # The run's failure, listed under the summary, goes to the last frame before it.
+        failure = page.d.find_elements(By.CSS_SELECTOR, '#summary .failure-note')
+        last = page.api.get('/api/run')['last_time']
+        if R.check(len(failure) == 1, 'warnings: the failure is listed under the summary', f'{len(failure)} notes'):
+            page.keys(Keys.HOME)
+            page.wait(lambda d: not close(page.state()['t'], last, 1e-9), 'the time to leave the last frame')
+            failure[0].click()
+            page.wait(lambda d: close(page.state()['t'], last, 1e-9), f'the time to go to {last} s')
+            page.ready()
+            R.check(close(float(page.frame_params()['t']), last, 1e-9),
+                    'warnings: a click on the failure shows the last frame before it', f"{page.frame_params()['t']}")
         page.shot(shots, 'warnings.png')
         page.collect_log()
         R.check(not page.severe, 'no JS errors in the browser log (warnings)', '; '.join(page.severe[:5]))

@@ -1177,10 +1177,16 @@
     cols.forEach((r, i) => {
       const s = sums[i];
       if (s && !s.ok && s.failure) {
-        html += `<div class="failure-note">${cols.length > 1 ? `<b>${r.toUpperCase()}</b> ` : ''}${esc(s.failure)}</div>`;
+        // A button, as the warnings are: it goes to the last frame before the failure.
+        const last = S.info[r].last_time;
+        html += `<button type="button" class="failure-note" data-t="${last}" title="go to the last frame, t = ${fmtTime(last)}">` +
+          `${cols.length > 1 ? `<b>${r.toUpperCase()}</b> ` : ''}${esc(s.failure)}</button>`;
       }
     });
     $('summary').innerHTML = html;
+    for (const note of $('summary').querySelectorAll('.failure-note')) {
+      note.addEventListener('click', () => setTime(Number(note.dataset.t)));
+    }
   }
 
   // ------------------------------------------------------------------ compare
