@@ -56,9 +56,9 @@ FrameSource::FrameSource(const std::string& run_path)
 void FrameSource::recheck_run() {
   LogRunCheck check = check_log_against_run(run_path_, frame_count_, metadata_.scene_hash);
   warnings_ = std::move(check.warnings);
-  // A summary without the time reached (hand-edited) still marks the run failed, after its log.
+  // A summary without a time reached (hand-edited) still marks the run failed, after its log.
   failed_at_.reset();
-  if (check.failed_at) failed_at_ = std::isfinite(*check.failed_at) ? *check.failed_at : last_time_;
+  if (check.failed) failed_at_ = std::isfinite(check.failed_at) ? check.failed_at : last_time_;
 }
 
 std::vector<std::string> FrameSource::run_files() const {

@@ -55,10 +55,12 @@ TEST(RenderFailedRun, TheTimeTheRunReachedComesFromItsSummary) {
   write_summary(run, spec.frames, false, "1.0375");
   ASSERT_TRUE(FrameSource(run).failed_at());
   EXPECT_EQ(*FrameSource(run).failed_at(), 1.0375);
-  // Without the time, the run failed after its last logged frame.
-  write_summary(run, spec.frames, false, "");
-  ASSERT_TRUE(FrameSource(run).failed_at());
-  EXPECT_EQ(*FrameSource(run).failed_at(), spec.duration);
+  // Without a time, or with one no run reaches (hand-edited), after its last logged frame.
+  for (const std::string& reached : {std::string(""), std::string("-1"), std::string("\"soon\"")}) {
+    write_summary(run, spec.frames, false, reached);
+    ASSERT_TRUE(FrameSource(run).failed_at()) << reached;
+    EXPECT_EQ(*FrameSource(run).failed_at(), spec.duration) << reached;
+  }
 }
 
 TEST(RenderFailedRun, TheHudSaysTheRunFailedAndNothingElseChanges) {

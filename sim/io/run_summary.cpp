@@ -101,11 +101,9 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
 
 namespace {
 
-// A summary saying its run failed: what is made from the log (a video, a still, a CSV) ends with
-// the last frame before the failure.
+// For a summary saying its run failed: what is made from the log (a video, a still, a CSV) ends
+// with the last frame before the failure.
 std::string failure_warning(const json& summary, const std::string& summary_path) {
-  const auto ok = summary.find("ok");
-  if (ok == summary.end() || !ok->is_boolean() || ok->get<bool>()) return "";
   const auto failure = summary.find("failure");
   return "warning: " + summary_path + ": the run failed (" +
          (failure != summary.end() && failure->is_string() ? failure->get<std::string>() : "no /failure given") +
@@ -153,11 +151,13 @@ LogRunCheck check_log_against_run(const std::string& run_path, std::size_t log_f
     throw InputError(log_path.string() + ": " + std::to_string(log_frames) + " frames, but " + summary_path.string() +
                      " says the run wrote " + std::to_string(frames->get<std::uint64_t>()) +
                      ": the log was cut or appended to after the run ended (run it again, or copy it again)");
-  const std::string failure = failure_warning(*summary, summary_path.string());
-  if (!failure.empty()) {
-    warn(failure);
+  const auto ok = summary->find("ok");
+  check.failed = ok != summary->end() && ok->is_boolean() && !ok->get<bool>();
+  if (check.failed) {
+    warn(failure_warning(*summary, summary_path.string()));
     const auto reached = summary->find("simulated_time");
-    check.failed_at = reached != summary->end() && reached->is_number() ? reached->get<double>() : std::nan("");
+    if (reached != summary->end() && reached->is_number() && reached->get<double>() >= 0.0)
+      check.failed_at = reached->get<double>();
   }
   return check;
 }

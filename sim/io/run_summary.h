@@ -2,7 +2,7 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,9 +15,11 @@ std::string run_summary_json(const Scene& scene, const Run& run);
 // What check_log_against_run found: the warnings, each a line, and whether the run failed.
 struct LogRunCheck {
   std::vector<std::string> warnings;
-  // The summary says the run failed: the time it had reached (s, the summary's
-  // /simulated_time; NaN where it gives none). Pictures of the run say so.
-  std::optional<double> failed_at;
+  // The summary says the run failed (/ok false); pictures of the run say so.
+  bool failed = false;
+  // The time a failed run had reached (s, the summary's /simulated_time); NaN where it gives
+  // none that is finite and >= 0 (a hand-edited summary).
+  double failed_at = std::numeric_limits<double>::quiet_NaN();
 };
 
 // What a reader of a run's log (`run_path`: the run directory, or a log file) must know of its
