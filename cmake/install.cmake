@@ -32,7 +32,7 @@ endif()
 # run summary; rendering a run directory.
 set(VASCSIM_API_HEADERS
   sim/io/scene_reader.h sim/run/compile.h sim/run/run.h sim/log/frame_log.h sim/io/log_metadata.h
-  sim/io/run_log.h sim/io/run_summary.h sim/io/output_file.h sim/io/provenance.h sim/scene/input_error.h)
+  sim/io/run_log.h sim/io/run_summary.h sim/io/log_run_check.h sim/io/output_file.h sim/io/provenance.h sim/scene/input_error.h)
 if(VASCSIM_RENDER)
   list(APPEND VASCSIM_API_HEADERS render/render_run.h render/frame_source.h)
 endif()

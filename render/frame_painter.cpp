@@ -163,8 +163,8 @@ ForceScales choose_force_scales(const FrameSource& source, const View& view) {
 }
 
 FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const ForceScales& scales,
-                           const FrameState& first_frame, const FailedRuns& failed)
-    : meta_(metadata), view_(view), scales_(scales), failed_(failed), world_(world_box(metadata, first_frame)) {
+                           const FrameState& first_frame, const RunsEndedEarly& ended_early)
+    : meta_(metadata), view_(view), scales_(scales), ended_early_(ended_early), world_(world_box(metadata, first_frame)) {
   // The lumen is triangulated once, in metres; each frame only moves the vertices. A single
   // axis-aligned rectangle (a maze logs its bounds so) is filled with a clear as before: cheaper,
   // and maze pictures stay exactly what they were.
@@ -182,7 +182,7 @@ FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const 
   // instead: a panel squeezed to nothing drew its values over the map without their labels.
   map_x1_ = static_cast<float>(side_panel_ ? std::round(w - std::max(0.28 * w, 15.0 * font_px_)) : w);
   if (map_x1_ - map_x0_ < 0.3 * w) side_panel_ = false, map_x1_ = static_cast<float>(w);
-  // A card taller than the frame (a failed run's thumbnail) leaves out the title, not a value.
+  // A card taller than the frame (the thumbnail of a run that ended early) leaves out the title, not a value.
   if (hud && !side_panel_ && card_bottom() > h) card_title_line_ = false;
   // Without a side panel the HUD card takes a band across the top: the map starts below it, so
   // the card never hides a wall or the rod.
@@ -351,7 +351,7 @@ void FramePainter::paint_arrows(Canvas& c, const std::vector<double>& forces, do
 
 float FramePainter::card_bottom() const {
   const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = 1.45f * fs;
-  return 0.5f * pad + (4.3f + (card_title_line_ ? 1.3f : 0.0f) + static_cast<float>(failed_.count())) * row + pad;
+  return 0.5f * pad + (4.3f + (card_title_line_ ? 1.3f : 0.0f) + static_cast<float>(ended_early_.count())) * row + pad;
 }
 
 float FramePainter::band_height() const {
@@ -443,13 +443,15 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     field({"Magnetic force", "Magnetic", "Force"},
           f.actuation.empty() ? std::string("n/a") : format_value(f.actuation_total().norm(), scales_.unit, 2));
     field({"Max contact", "Contact"}, f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
-    if (failed_.run) {
-      std::snprintf(buf, sizeof buf, "at %.3f s", *failed_.run);
-      field({"Run failed", "Failed"}, buf, kFailure, kFailure);
+    if (const auto& end = ended_early_.run) {
+      std::snprintf(buf, sizeof buf, "at %.3f s", end->at);
+      if (end->stopped) field({"Run stopped", "Stopped"}, buf, kFailure, kFailure);
+      else field({"Run failed", "Failed"}, buf, kFailure, kFailure);
     }
-    if (failed_.overlay) {
-      std::snprintf(buf, sizeof buf, "at %.3f s", *failed_.overlay);
-      field({"Compared run failed", "Compared failed", "B failed"}, buf, kFailure, kFailure);
+    if (const auto& end = ended_early_.overlay) {
+      std::snprintf(buf, sizeof buf, "at %.3f s", end->at);
+      if (end->stopped) field({"Compared run stopped", "Compared stopped", "B stopped"}, buf, kFailure, kFailure);
+      else field({"Compared run failed", "Compared failed", "B failed"}, buf, kFailure, kFailure);
     }
     record("hud", hud_top, y - row);
   }

@@ -49,12 +49,13 @@ double typical_peak(std::vector<double> values);
 // sampled), not the rendered window, so a clip draws the same arrows as the full video.
 ForceScales choose_force_scales(const FrameSource& source, const View& view);
 
-// The runs in the picture that failed (their summary.json says so; FrameSource::failed_at()),
-// each with the time it had reached (s). The HUD says so in red on every frame, so no picture of
-// a failed run passes for a finished one, nor a compared rod that stops moving for one that stopped.
-struct FailedRuns {
-  std::optional<double> run;      // the run whose map is painted
-  std::optional<double> overlay;  // the compared run drawn over it (given only with one)
+// The runs in the picture that ended early, failed or stopped (their summary.json says so;
+// FrameSource::ended_early()), each with the time it had reached. The HUD says so in red on every
+// frame, so no picture of such a run passes for a finished one, nor a compared rod that stops
+// moving for one that stopped of its own accord.
+struct RunsEndedEarly {
+  std::optional<EarlyEnd> run;      // the run whose map is painted
+  std::optional<EarlyEnd> overlay;  // the compared run drawn over it (given only with one)
   int count() const { return static_cast<int>(run.has_value()) + static_cast<int>(overlay.has_value()); }
 };
 
@@ -68,7 +69,7 @@ class FramePainter {
  public:
   // `first_frame`: the log's frame 0 (the fit camera of a log without bounds frames it).
   FramePainter(const LogMetadata& metadata, const View& view, const ForceScales& scales,
-               const FrameState& first_frame, const FailedRuns& failed = {});
+               const FrameState& first_frame, const RunsEndedEarly& ended_early = {});
   // `trail`: tip positions so far (m), oldest first. `overlay`: another run's state at the same
   // time, whose rod is drawn over this run's map (compare mode), or null.
   void paint(Canvas& canvas, const FrameState& frame, const std::vector<Vec2>& trail,
@@ -110,7 +111,7 @@ class FramePainter {
   LogMetadata meta_;
   View view_;
   ForceScales scales_;
-  FailedRuns failed_;
+  RunsEndedEarly ended_early_;
   Box2 world_;                    // m, what the fit camera shows
   float map_x0_, map_x1_;         // px, the map's horizontal extent (the panel takes the rest)
   float map_y0_;                  // px, top of the map (below the HUD card of narrow frames)

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "sim/io/run_summary.h"
+#include "sim/io/log_run_check.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -56,9 +56,9 @@ FrameSource::FrameSource(const std::string& run_path)
 void FrameSource::recheck_run() {
   LogRunCheck check = check_log_against_run(run_path_, frame_count_, metadata_.scene_hash);
   warnings_ = std::move(check.warnings);
-  // A summary without a time reached (hand-edited) still marks the run failed, after its log.
-  failed_at_.reset();
-  if (check.failed) failed_at_ = std::isfinite(check.failed_at) ? check.failed_at : last_time_;
+  // A summary without a time reached (hand-edited) still marks the run, after its log.
+  ended_early_ = check.ended_early;
+  if (ended_early_ && !std::isfinite(ended_early_->at)) ended_early_->at = last_time_;
 }
 
 std::vector<std::string> FrameSource::run_files() const {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sim/io/log_metadata.h"
+#include "sim/io/log_run_check.h"
 #include "sim/log/frame_log.h"
 #include "sim/scene/input_error.h"
 
@@ -50,11 +51,12 @@ class FrameSource {
   std::vector<std::string> run_files() const;
   const LogMetadata& metadata() const { return metadata_; }
   // What a user should know about the log's run on opening it (or at the last recheck_run): a
-  // run without summary.json (stopped or still writing), a summary the log could not be checked
-  // against, or a run that failed.
+  // run without summary.json (killed or still writing), a summary the log could not be checked
+  // against, or a run that failed or was stopped.
   const std::vector<std::string>& warnings() const { return warnings_; }
-  // The run failed (its summary says so): the time it had reached (s). Its pictures say so.
-  std::optional<double> failed_at() const { return failed_at_; }
+  // The run failed or was stopped (its summary says so), and the time it had reached (s, the
+  // last frame's where the summary gives none). Its pictures say so.
+  const std::optional<EarlyEnd>& ended_early() const { return ended_early_; }
   std::size_t frame_count() const { return frame_count_; }
   double first_time() const { return first_time_; }
   double last_time() const { return last_time_; }
@@ -96,7 +98,7 @@ class FrameSource {
   // frame count changed.
   bool refresh();
   // Checks the log against its run again, as on opening: once the summary of a run that was
-  // still writing has appeared, warnings() and failed_at() are the ended run's. Throws as the
+  // still writing has appeared, warnings() and ended_early() are the ended run's. Throws as the
   // constructor does (a summary counting other frames than the log holds).
   void recheck_run();
   // The log's path now names another file, or the log holds fewer frames than it did (cut, or
@@ -115,7 +117,7 @@ class FrameSource {
   FrameLogReader reader_;
   LogMetadata metadata_;
   std::vector<std::string> warnings_;
-  std::optional<double> failed_at_;
+  std::optional<EarlyEnd> ended_early_;
   std::size_t frame_count_ = 0;
   double first_time_ = 0, last_time_ = 0;
   int position_ = -1, actuation_ = -1, contact_ = -1, friction_ = -1, drag_ = -1, reference_ = -1, tip_error_ = -1;

@@ -241,7 +241,7 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
   source.frame(0, state);
   const ForceScales scales = choose_force_scales(source, view);
   FramePainter painter(source.metadata(), view, scales, state,
-                       {source.failed_at(), overlay ? overlay->failed_at() : std::nullopt});
+                       {source.ended_early(), overlay ? overlay->ended_early() : std::nullopt});
   Canvas canvas(view.width, view.height, o.aa);
 
   // Video frames must reach the encoder in order even when two workers also compress PNGs.

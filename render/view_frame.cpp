@@ -17,7 +17,7 @@ ViewFrameInfo render_view_frame(Canvas& canvas, const ViewFrameInputs& in, const
   source.frame(0, first);
   source.at_time(t, state);
   FramePainter painter(source.metadata(), view, scales_for(in.peaks, view), first,
-                       {source.failed_at(), in.overlay ? in.overlay->failed_at() : std::nullopt});
+                       {source.ended_early(), in.overlay ? in.overlay->ended_early() : std::nullopt});
   TipTrail trail(1.0 / painter.pixels_per_metre());
   trail.advance(frames_through(source, t), in.tip_of ? in.tip_of : [&](std::size_t i) { return source.tip_of(i); });
   const FrameState* overlay = nullptr;

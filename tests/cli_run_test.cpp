@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -109,6 +111,61 @@ TEST(CliRun, StaticModeRecordsTheUnloadedRodAndItsEquilibrium) {
   EXPECT_EQ(loaded[0], 1.0);
   EXPECT_EQ(unloaded[tip_y], 0.0);
   EXPECT_NEAR(-loaded[tip_y], length * alpha / 3.0, 2e-3 * length * alpha / 3.0);
+  fs::remove_all(dir);
+}
+
+// Ctrl-C, or a scheduler's SIGTERM, stops a run after the step in progress, and the run says so:
+// its summary (/ok false, /stopped_by, the frames it kept), the command line, and the process's
+// end by that very signal, as a shell or a sweep expect of a stopped command. What is made of the
+// run warns that it was stopped (its pictures say "Run stopped": tests/render_failed_run_test.cpp).
+TEST(CliRun, ARunStoppedBySignalWritesASummaryThatSaysSoAndEndsByTheSignal) {
+  const std::string dir = fresh_temp_dir("run_stopped");
+  write_text(dir + "/long.json", R"({"maze": null, "rod": {"nodes": 40}, "run": {"duration": 1000, "output_interval": 0.01}})");
+  for (const auto& [signal, name] : {std::pair<int, std::string>{SIGINT, "SIGINT (Ctrl-C)"}, {SIGTERM, "SIGTERM"}}) {
+    const std::string out = dir + "/out" + std::to_string(signal), printed = dir + "/printed.txt";
+    const pid_t run = ::fork();
+    if (run == 0) {
+      const int file = ::open(printed.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      ::dup2(file, 1);
+      ::dup2(file, 2);
+      ::execl(VASCSIM_EXE, VASCSIM_EXE, "run", (dir + "/long.json").c_str(), "--out", out.c_str(), "--quiet",
+              static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    for (int k = 0; k < 3000 && !fs::exists(out + "/frames.vlog"); ++k) ::usleep(10000);  // up to 30 s
+    ASSERT_TRUE(fs::exists(out + "/frames.vlog")) << "the run never started";
+    ::usleep(300000);
+    ::kill(run, signal);
+    int status = 0;
+    ASSERT_EQ(::waitpid(run, &status, 0), run);
+    const std::string output = read_text(printed);
+    ASSERT_TRUE(WIFSIGNALED(status)) << status << "\n" << output;
+    EXPECT_EQ(WTERMSIG(status), signal);
+    ASSERT_TRUE(fs::exists(out + "/summary.json")) << output;
+    const nlohmann::json summary = nlohmann::json::parse(read_text(out + "/summary.json"));
+    EXPECT_EQ(summary["ok"], false);
+    EXPECT_EQ(summary["stopped_by"], name);
+    const std::string failure = summary["failure"].get<std::string>();
+    EXPECT_EQ(failure.rfind("stopped by " + name + " at t = ", 0), 0u) << failure;
+    EXPECT_NE(failure.find("before the run's end (1000 s)"), std::string::npos) << failure;
+    FrameLogReader log(out + "/frames.vlog");
+    ASSERT_GE(log.frame_count(), 2u);
+    EXPECT_EQ(summary["frames"], log.frame_count()) << "the summary does not describe the log kept";
+    std::vector<double> last;
+    log.read(log.frame_count() - 1, last);
+    EXPECT_GE(summary["simulated_time"].get<double>(), last[0]);
+    EXPECT_LT(summary["simulated_time"].get<double>(), last[0] + 0.01 + 1e-9) << "it went on past the next frame";
+    EXPECT_NE(output.find("STOPPED: "), std::string::npos) << output;
+    EXPECT_NE(output.find("vascsim run: " + failure + "; the frames computed until then are kept"), std::string::npos)
+        << output;
+    EXPECT_FALSE(fs::exists(out + "/.vascsim-run.lock")) << "the stopped run left its claim";
+    const CommandResult csv = run_vascsim("export " + out + " --csv " + dir + "/csv" + std::to_string(signal));
+    EXPECT_EQ(csv.exit_code, 0) << csv.output;
+    EXPECT_NE(csv.output.find(out + "/summary.json: the run was stopped before its end (" + failure +
+                              "); its log ends with the last frame before it stopped"),
+              std::string::npos)
+        << csv.output;
+  }
   fs::remove_all(dir);
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "sim/io/output_file.h"
@@ -150,8 +151,13 @@ TEST(SweepCli, CtrlCStopsCleanlyAndAResumeGivesTheSameTable) {
     // A recorded run has its summary. (A run stopped after writing its summary, before it exited,
     // has no status.json and still counts as completed: summary.json is written last.)
     EXPECT_TRUE(summary || !status) << run << ": a status without a summary";
-    completed += summary;
-    stopped += !summary && fs::exists(run + "/frames.vlog");
+    // A run the sweep stopped (passing on the signal as SIGTERM) ended after its step in
+    // progress, and its summary says so; the sweep records no status for it.
+    const bool stopped_by_sweep =
+        summary && nlohmann::json::parse(read_text(run + "/summary.json")).value("stopped_by", nlohmann::json()) == "SIGTERM";
+    EXPECT_FALSE(stopped_by_sweep && status) << run << ": a run the sweep stopped was recorded";
+    completed += summary && !stopped_by_sweep;
+    stopped += stopped_by_sweep;
   }
   EXPECT_GE(completed, 1u) << r.output;
   EXPECT_LT(completed, 4u) << r.output;

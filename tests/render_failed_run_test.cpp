@@ -2,7 +2,8 @@
 // run had reached (its summary.json's /simulated_time), on every frame, so a reviewer who sees a
 // video or a still without the warnings `vascsim render` printed does not take its last frame
 // for where the run ended of its own accord. The rest of the picture is the same as a finished
-// run's.
+// run's. A run stopped by a signal (Ctrl-C, a job's time limit: its summary's /stopped_by) says
+// "Run stopped" instead.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,11 +25,14 @@ namespace {
 using testing::ScratchDir;
 
 // The summary `vascsim run` writes, reduced to what a reader checks; `ok` and the time reached as
-// given ("" leaves the time out, as a hand-edited summary may).
-void write_summary(const std::string& run, int frames, bool ok, const std::string& simulated_time) {
+// given ("" leaves the time out, as a hand-edited summary may); `stopped_by` names the signal that
+// stopped the run, or is empty.
+void write_summary(const std::string& run, int frames, bool ok, const std::string& simulated_time,
+                   const std::string& stopped_by = "") {
   std::string summary = R"({"format": "vascsim-summary/1", "ok": )" + std::string(ok ? "true" : "false") +
                         R"(, "failure": )" + (ok ? "null" : R"("Newton did not converge")") +
                         ", \"frames\": " + std::to_string(frames);
+  summary += ", \"stopped_by\": " + (stopped_by.empty() ? std::string("null") : "\"" + stopped_by + "\"");
   if (!simulated_time.empty()) summary += ", \"simulated_time\": " + simulated_time;
   testing::write_bytes(run + "/summary.json", summary + "}\n");
 }
@@ -49,17 +53,21 @@ TEST(RenderFailedRun, TheTimeTheRunReachedComesFromItsSummary) {
   ScratchDir dir("failed_run_source");
   SyntheticLogSpec spec;
   const std::string run = testing::make_run(dir, spec);
-  EXPECT_FALSE(FrameSource(run).failed_at()) << "a run without a summary is not known to have failed";
+  EXPECT_FALSE(FrameSource(run).ended_early()) << "a run without a summary is not known to have failed";
   write_summary(run, spec.frames, true, "1.0");
-  EXPECT_FALSE(FrameSource(run).failed_at());
+  EXPECT_FALSE(FrameSource(run).ended_early());
   write_summary(run, spec.frames, false, "1.0375");
-  ASSERT_TRUE(FrameSource(run).failed_at());
-  EXPECT_EQ(*FrameSource(run).failed_at(), 1.0375);
+  ASSERT_TRUE(FrameSource(run).ended_early());
+  EXPECT_EQ(FrameSource(run).ended_early()->at, 1.0375);
+  EXPECT_FALSE(FrameSource(run).ended_early()->stopped);
+  write_summary(run, spec.frames, false, "1.0375", "SIGINT (Ctrl-C)");
+  ASSERT_TRUE(FrameSource(run).ended_early());
+  EXPECT_TRUE(FrameSource(run).ended_early()->stopped);
   // Without a time, or with one no run reaches (hand-edited), after its last logged frame.
   for (const std::string& reached : {std::string(""), std::string("-1"), std::string("\"soon\"")}) {
     write_summary(run, spec.frames, false, reached);
-    ASSERT_TRUE(FrameSource(run).failed_at()) << reached;
-    EXPECT_EQ(*FrameSource(run).failed_at(), spec.duration) << reached;
+    ASSERT_TRUE(FrameSource(run).ended_early()) << reached;
+    EXPECT_EQ(FrameSource(run).ended_early()->at, spec.duration) << reached;
   }
 }
 
@@ -76,6 +84,10 @@ TEST(RenderFailedRun, TheHudSaysTheRunFailedAndNothingElseChanges) {
   ASSERT_EQ(finished.hud.size(), 4u);
   ASSERT_EQ(failed.hud.size(), 5u);
   EXPECT_STREQ(failed.hud.back().label, "Run failed");
+  write_summary(run, spec.frames, false, "1.0375", "SIGTERM");
+  const testing::PaintedFrame stopped = testing::paint_last_frame(run, w, h);
+  ASSERT_EQ(stopped.hud.size(), 5u);
+  EXPECT_STREQ(stopped.hud.back().label, "Run stopped");
   ASSERT_FALSE(failed.items.empty());
   ASSERT_STREQ(failed.items.front().what, "hud");
   ASSERT_STREQ(finished.items.front().what, "hud");
@@ -160,10 +172,13 @@ TEST(RenderFailedRun, AComparedRunThatFailedIsSaidToHaveFailed) {
   FrameState state, other;
   run_a.frame(0, state);
   FrameSource(b).at_time(0.5, other);
-  FramePainter painter(run_a.metadata(), view, choose_force_scales(run_a, view), state, {std::nullopt, 0.75});
-  painter.paint(canvas, state, {}, &other);
-  ASSERT_EQ(painter.hud_fields().size(), 5u);
-  EXPECT_STREQ(painter.hud_fields().back().label, "Compared run failed");
+  for (const bool stopped : {false, true}) {
+    FramePainter painter(run_a.metadata(), view, choose_force_scales(run_a, view), state,
+                         {std::nullopt, EarlyEnd{0.75, stopped}});
+    painter.paint(canvas, state, {}, &other);
+    ASSERT_EQ(painter.hud_fields().size(), 5u);
+    EXPECT_STREQ(painter.hud_fields().back().label, stopped ? "Compared run stopped" : "Compared run failed");
+  }
 }
 
 // The plots of a failed run say so in red in their top margin; a finished run's have no red there.

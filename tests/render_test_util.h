@@ -108,7 +108,7 @@ inline PaintedFrame paint_last_frame(const std::string& run, int width, int heig
   view.height = height;
   FrameState state;
   source.frame(source.frame_count() - 1, state);
-  FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state, {source.failed_at(), std::nullopt});
+  FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state, {source.ended_early(), std::nullopt});
   Canvas canvas(width, height);
   painter.paint(canvas, state, {});
   PaintedFrame p;

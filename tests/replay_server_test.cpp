@@ -436,6 +436,25 @@ TEST(ReplayServer, ALiveRunThatFailsIsSaidToHaveFailedOnceItsSummaryAppears) {
   EXPECT_TRUE(ended->body == vascsim::test::read_text(png)) << "the frame differs from the still of the failed run";
 }
 
+// A run stopped by a signal (Ctrl-C, a job's time limit) is marked on the timeline as stopped,
+// not as failed: the simulation did not fail, someone ended it.
+TEST(ReplayServer, ARunStoppedBySignalIsMarkedStoppedOnTheTimeline) {
+  ScratchDir dir("replay_stopped");
+  const std::string run = dir / "run";
+  fs::create_directories(run);
+  FrameLogWriter writer(run + "/frames.vlog", live_log_header());
+  for (int k = 0; k < 12; ++k) append_live_frame(writer, k);
+  writer.close();
+  vascsim::test::write_text(run + "/summary.json", R"json({"format": "vascsim-summary/1", "ok": false,
+      "failure": "stopped by SIGTERM at t = 1.13 s, before the run's end (20 s)", "stopped_by": "SIGTERM",
+      "frames": 12, "simulated_time": 1.13})json");
+  LiveServer s({{run}});
+  const json events = get_json(s, "/api/events");
+  ASSERT_FALSE(events["events"].empty());
+  EXPECT_EQ(events["events"].back()["kind"], "failure");
+  EXPECT_EQ(events["events"].back()["label"], "run stopped by SIGTERM at t = 1.13 s, before the run's end (20 s)");
+}
+
 // A run that failed replays up to its last frame, with the failure marked on the timeline.
 TEST(ReplayServer, AFailedRunReplaysToItsLastFrame) {
   ScratchDir dir("replay_failed");

@@ -69,6 +69,31 @@ TEST(SweepOutcome, TellsDoneFailedAndMissingRunsApart) {
   EXPECT_EQ(read_run_outcome(dir).status, "missing") << "an unreadable status says nothing";
 }
 
+// A run stopped by a signal writes a summary that says so (/stopped_by). Stopped by the sweep
+// itself (which then records no status.json: its Ctrl-C, Slurm's SIGTERM to the whole job, the
+// kernel's after the sweep was killed), it was not run to its end and is run again on resume, as
+// before runs wrote such a summary; stopped by a signal the sweep saw end it (someone killed that
+// one run), it failed, and says who stopped it.
+TEST(SweepOutcome, ARunStoppedBySignalIsMissingUnlessTheSweepSawItEnd) {
+  const std::string dir = test::fresh_temp_dir("sweep_outcome_stopped");
+  std::string stopped = kSummary;
+  const std::string ok = "\"ok\": true, \"failure\": null";
+  stopped.replace(stopped.find(ok), ok.size(),
+                  "\"ok\": false, \"failure\": \"stopped by SIGTERM at t = 2.5 s, before the run's end (30 s)\", "
+                  "\"stopped_by\": \"SIGTERM\"");
+  test::write_text(dir + "/summary.json", stopped);
+  const RunOutcome by_sweep = read_run_outcome(dir);
+  EXPECT_EQ(by_sweep.status, "missing");
+  EXPECT_EQ(by_sweep.failure, "");
+  EXPECT_TRUE(std::isnan(by_sweep.metrics[kGoalTime])) << "a stopped run's figures are not results";
+  RunStatusRecord killed;
+  killed.signal = SIGTERM;
+  test::write_text(dir + "/status.json", run_status_json(killed));
+  const RunOutcome by_someone = read_run_outcome(dir);
+  EXPECT_EQ(by_someone.status, "failed");
+  EXPECT_EQ(by_someone.failure, "stopped by SIGTERM at t = 2.5 s, before the run's end (30 s)");
+}
+
 TEST(SweepResults, OneRowPerRunQuotedTimingLastAndSummariesOverTheOtherAxes) {
   SweepManifest m;
   m.name = "t";

@@ -399,10 +399,14 @@ struct ReplayServer::Impl {
     for (const RunWarning& w : listed_warnings(s))
       if (std::isfinite(w.first_time))
         list.push_back({{"t", w.first_time}, {"kind", "warning"}, {"label", "warning: " + w.line()}});
-    if (s.is_object() && s.contains("ok") && s["ok"] == false)
+    if (s.is_object() && s.contains("ok") && s["ok"] == false) {
+      const std::string failure = s["failure"].is_string() ? s["failure"].get<std::string>() : "";
+      // A run stopped by a signal is not a failure of the simulation; its /failure says who stopped it.
+      const bool stopped = s.contains("stopped_by") && s["stopped_by"].is_string();
       list.push_back({{"t", run.source().last_time()},
                       {"kind", "failure"},
-                      {"label", "run failed: " + (s["failure"].is_string() ? s["failure"].get<std::string>() : "")}});
+                      {"label", stopped ? "run " + failure : "run failed: " + failure}});
+    }
     std::stable_sort(list.begin(), list.end(), [](const json& a, const json& b) { return a["t"] < b["t"]; });
     send_json(res, {{"run", run.id()}, {"events", list}, {"truncated", truncated}});
   }

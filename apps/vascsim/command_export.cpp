@@ -6,7 +6,7 @@
 #include "apps/vascsim/commands.h"
 #include "sim/io/csv_export.h"
 #include "sim/io/log_metadata.h"
-#include "sim/io/run_summary.h"
+#include "sim/io/log_run_check.h"
 #include "sim/log/frame_log.h"
 
 namespace vascsim::cli {

@@ -7,11 +7,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "apps/vascsim/cli_args.h"
 #include "apps/vascsim/commands.h"
+#include "apps/vascsim/stop_on_signal.h"
 #include "sim/io/output_file.h"
 #include "sim/io/run_files.h"
 #include "sim/io/run_log.h"
@@ -46,7 +48,9 @@ void print_usage() {
       "usage: vascsim run SCENE --out DIR [--force] [--duration T] [--quiet] [--render] [--max-log-size BYTES]\n\n"
       "Simulates the scene and streams every frame to DIR/frames.vlog (format in docs/frame-log.md);\n"
       "writes DIR/summary.json when the run ends or fails. Exit code 1 if the simulation failed\n"
-      "(every frame computed before the failure is kept), 2 for bad input.\n\noptions:\n%s",
+      "(every frame computed before the failure is kept), 2 for bad input. Ctrl-C, SIGTERM or SIGHUP\n"
+      "stop it after the step in progress: its summary says so, and it then ends by that signal\n"
+      "(a second Ctrl-C ends it at once).\n\noptions:\n%s",
       format_options(kOptions).c_str());
 }
 
@@ -219,7 +223,10 @@ int run_run_command(int argc, char** argv) {
   FrameLogWriter writer(log_path, log_header);
   FrameLogSink sink(writer);
   Progress progress(!args.flag("quiet"), scene.run.duration);
-  const bool ok = run.run(sink, [&](double t) { progress.update(t); });
+  // Until the summary is written. Not for a static solve, one step that does not ask: Ctrl-C ends it at once.
+  std::optional<StopOnSignal> stop;
+  if (scene.solver.mode != SolveMode::kStatic) stop.emplace();
+  const bool ok = run.run(sink, [&](double t) { progress.update(t); }, [&] { return stop ? stop->reason() : ""; });
   progress.finish();
   writer.close();
 
@@ -227,12 +234,13 @@ int run_run_command(int argc, char** argv) {
   const std::string summary = run_summary_json(scene, run);
   write_file_atomically(summary_path, summary);
   const RunStatistics& s = run.statistics();
+  const char* outcome = ok ? "done" : s.stopped_by.empty() ? "FAILED" : "STOPPED";
   if (scene.solver.mode == SolveMode::kStatic)
     std::printf("%s: static equilibrium in %d load increments, %lld Newton iterations, %.2f s, %zu frames -> %s\n",
-                ok ? "done" : "FAILED", s.steps, s.newton_iterations, s.wall_time, s.frames, log_path.c_str());
+                outcome, s.steps, s.newton_iterations, s.wall_time, s.frames, log_path.c_str());
   else
     std::printf("%s: %d steps, %.2f s simulated in %.2f s (%.1fx real time), %zu frames -> %s\n",
-                ok ? "done" : "FAILED", s.steps, s.simulated_time, s.wall_time,
+                outcome, s.steps, s.simulated_time, s.wall_time,
                 s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0, s.frames, log_path.c_str());
   // Where a controlled run's steps went: what a user tuning rtol or the floors looks at first.
   if (scene.solver.mode != SolveMode::kStatic && run.model().solver.adaptive == StepControl::kError)
@@ -254,6 +262,14 @@ int run_run_command(int argc, char** argv) {
   // Worded once for here and the replay page's timeline (sim/io/run_warnings.h).
   for (const RunWarning& w : listed_warnings(nlohmann::json::parse(summary)))
     std::fprintf(stderr, "vascsim run: warning: %s (summary.json /warnings)\n", w.line().c_str());
+  if (!s.stopped_by.empty())
+    std::fprintf(stderr, "vascsim run: %s; the frames computed until then are kept\n", s.failure.c_str());
+  // Also a signal that came after the last step: the run is complete, but nothing more is done.
+  if (stop && !stop->reason().empty()) {
+    stop->raise_again();  // ends the process by the signal, as without the summary
+    return 130;
+  }
+  stop.reset();
   if (!ok) {
     std::fprintf(stderr, "vascsim run: simulation failed: %s\n", s.failure.c_str());
     return 1;

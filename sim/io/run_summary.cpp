@@ -1,14 +1,11 @@
 #include "sim/io/run_summary.h"
 
 #include <cmath>
-#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "sim/io/json_fields.h"
 #include "sim/io/provenance.h"
-#include "sim/io/run_summary_reader.h"
 #include "sim/io/scene_reader.h"
-#include "sim/log/frame_log.h"
 
 namespace vascsim {
 
@@ -30,6 +27,8 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   j["provenance"] = {{"vascsim_version", p.version}, {"commit", p.commit}, {"scene_hash", p.scene_hash}};
   j["ok"] = !s.failed;
   j["failure"] = s.failed ? json(s.failure) : json(nullptr);
+  // Stopped by the user or a job scheduler rather than failed by the physics: a sweep runs it again.
+  j["stopped_by"] = s.stopped_by.empty() ? json(nullptr) : json(s.stopped_by);
   const bool is_static = scene.solver.mode == SolveMode::kStatic;
   j["mode"] = is_static ? "static" : "dynamic";  // static: steps are load increments, time the load scale
   j["steps"] = s.steps;
@@ -97,69 +96,6 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
                                     {"feed_force_mean", s.feed_force_mean}};
   }
   return j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n";  // a scene file name need not be UTF-8
-}
-
-namespace {
-
-// For a summary saying its run failed: what is made from the log (a video, a still, a CSV) ends
-// with the last frame before the failure.
-std::string failure_warning(const json& summary, const std::string& summary_path) {
-  const auto failure = summary.find("failure");
-  return "warning: " + summary_path + ": the run failed (" +
-         (failure != summary.end() && failure->is_string() ? failure->get<std::string>() : "no /failure given") +
-         "); its log ends with the last frame before the failure";
-}
-
-}  // namespace
-
-LogRunCheck check_log_against_run(const std::string& run_path, std::size_t log_frames,
-                                  const std::string& log_scene_hash) {
-  namespace fs = std::filesystem;
-  LogRunCheck check;
-  const auto warn = [&](const std::string& warning) {
-    if (!warning.empty()) check.warnings.push_back(warning);
-  };
-  warn(incomplete_run_warning(run_path));
-  const std::string run_dir = run_dir_of(run_path);
-  if (run_dir.empty()) return check;
-  const fs::path log_path = fs::path(run_dir) / "frames.vlog", summary_path = fs::path(run_dir) / "summary.json";
-  const std::string not_checked = ", so " + log_path.string() + " was not checked against it (its own checks still apply)";
-  std::optional<json> summary;
-  try {
-    summary = read_run_summary(run_dir);
-  } catch (const InputError& e) {
-    warn(std::string("warning: ") + e.what() + not_checked);
-    return check;
-  }
-  if (!summary) return check;
-  if (!summary->is_object()) {
-    warn("warning: " + summary_path.string() + ": not a JSON object" + not_checked);
-    return check;
-  }
-  const json::json_pointer hash_pointer("/provenance/scene_hash");
-  if (summary->contains(hash_pointer) && (*summary)[hash_pointer].is_string()) {
-    const auto summary_hash = (*summary)[hash_pointer].get<std::string>();
-    if (!summary_hash.empty() && !log_scene_hash.empty() && summary_hash != log_scene_hash)
-      throw InputError(summary_path.string() + ": /provenance/scene_hash is " + summary_hash + ", but " + log_path.string() +
-                       " was written by a run of the scene with hash " + log_scene_hash +
-                       ": the summary is another run's (run the scene again, or copy the run directory whole)");
-  }
-  const json* frames = summary->contains("frames") ? &(*summary)["frames"] : nullptr;
-  if (!frames || !frames->is_number_unsigned())
-    warn("warning: " + summary_path.string() + ": no /frames count (not a summary vascsim wrote)" + not_checked);
-  else if (frames->get<std::uint64_t>() != log_frames)
-    throw InputError(log_path.string() + ": " + std::to_string(log_frames) + " frames, but " + summary_path.string() +
-                     " says the run wrote " + std::to_string(frames->get<std::uint64_t>()) +
-                     ": the log was cut or appended to after the run ended (run it again, or copy it again)");
-  const auto ok = summary->find("ok");
-  check.failed = ok != summary->end() && ok->is_boolean() && !ok->get<bool>();
-  if (check.failed) {
-    warn(failure_warning(*summary, summary_path.string()));
-    const auto reached = summary->find("simulated_time");
-    if (reached != summary->end() && reached->is_number() && reached->get<double>() >= 0.0)
-      check.failed_at = reached->get<double>();
-  }
-  return check;
 }
 
 }  // namespace vascsim

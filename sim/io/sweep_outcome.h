@@ -3,10 +3,11 @@
 // by the sweep when the `vascsim run` process exits: its exit code or signal, wall and CPU time,
 // host). A run is
 //   done     summary.json says ok
-//   failed   summary.json says it failed (the simulation diverged), or the process ended without
-//            a summary (bad input, a crash, killed by a signal: status.json says which)
-//   missing  neither: never started, or interrupted by the sweep's own Ctrl-C (it removes the
-//            status of runs it stops), or the machine went away under it
+//   failed   summary.json says it failed (the simulation diverged, or a signal stopped it that
+//            the sweep saw end it: status.json), or the process ended without a summary (bad
+//            input, a crash, killed by a signal: status.json says which)
+//   missing  neither: never started, or stopped by the sweep's own Ctrl-C or SIGTERM (it records
+//            no status of runs it stops; their summary says /stopped_by), or the machine went away
 // Resume runs the missing ones; --retry-failed also the failed ones.
 #pragma once
 

@@ -85,7 +85,7 @@ std::string frame_log_path(const std::string& run_path);
 // summary describes).
 std::string run_dir_of(const std::string& run_path);
 // For a run directory without summary.json (written last, when a run ends, whether it reached
-// its end or diverged): a warning that the run was stopped or is still being written, so its log
+// its end or diverged): a warning that the run was killed or is still being written, so its log
 // may end early. Empty for a finished run and for a log that is not a run directory's.
 std::string incomplete_run_warning(const std::string& run_path);
 

@@ -419,7 +419,8 @@ bool Run::solve_equilibrium(FrameSink& sink) {
   return report.ok;
 }
 
-bool Run::run(FrameSink& sink, const std::function<void(double)>& progress) {
+bool Run::run(FrameSink& sink, const std::function<void(double)>& progress,
+              const std::function<std::string()>& stop_reason) {
   if (model_->solver.mode == SolveMode::kStatic) return solve_equilibrium(sink);
   const auto wall_start = Clock::now();
   const double duration = scene_.run.duration;
@@ -430,6 +431,18 @@ bool Run::run(FrameSink& sink, const std::function<void(double)>& progress) {
   std::size_t next_frame = 1, next_break = 0;
   bool ok = true, frames_done = false;
   while (state_.t < duration * (1.0 - 1e-12)) {
+    if (stop_reason) {
+      if (std::string who = stop_reason(); !who.empty()) {
+        char text[160];
+        std::snprintf(text, sizeof text, "stopped by %s at t = %.6g s, before the run's end (%.6g s)", who.c_str(),
+                      state_.t, duration);
+        stats_.failed = true;
+        stats_.failure = text;
+        stats_.stopped_by = std::move(who);
+        ok = false;
+        break;
+      }
+    }
     if (!controlled) {
       // Fixed steps land exactly on output times, so that frames are evenly spaced.
       const double h = std::min(proposed, output_time(next_frame) - state_.t);
@@ -477,7 +490,7 @@ bool Run::run(FrameSink& sink, const std::function<void(double)>& progress) {
       frames_done = t_out >= duration;
     }
   }
-  if (!ok) {
+  if (!ok && stats_.stopped_by.empty()) {
     // A step that fails on a rod stretched or squashed far past its linear model fails for the
     // load more than for the step (a feed into a dead end squashed a rod by 84 %, then Newton
     // failed): the message says so, where the warnings only count it.

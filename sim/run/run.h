@@ -79,6 +79,9 @@ struct RunStatistics {
   double wall_time = 0.0;            // s
   bool failed = false;
   std::string failure;
+  // Who ended the run before its duration (Run::run's `stop_reason`, e.g. "SIGINT (Ctrl-C)"):
+  // then `failed`, and the frames end where it stopped, not where the physics did.
+  std::string stopped_by;
   // Navigation scenes only.
   bool goal_reached = false;
   double goal_time = std::numeric_limits<double>::quiet_NaN();  // s
@@ -118,7 +121,11 @@ class Run {
   // before the failure has been written.
   // In static mode (scene solver.mode) it instead records the unloaded rod at t = 0 and the
   // equilibrium under the full loads at t = 1 (time stands for the load scale).
-  bool run(FrameSink& sink, const std::function<void(double t)>& progress = {});
+  // `stop_reason` (may be empty) is asked between steps; a non-empty answer (who asks, e.g.
+  // "SIGINT (Ctrl-C)") ends the run there as a failure that statistics().stopped_by names, with
+  // every frame computed so far written. A static solve is one step and is not asked.
+  bool run(FrameSink& sink, const std::function<void(double t)>& progress = {},
+           const std::function<std::string()>& stop_reason = {});
 
  private:
   // The controller's inputs for the next step (remembers the command for the log).

@@ -856,6 +856,41 @@ def log_layout(path):
     return (at + 7) // 8 * 8, 8 * doubles
 
 
+def check_stopped_run(driver, exe, shots, workdir):
+    """A run stopped by Ctrl-C reads as stopped, not failed: the summary's result, the note under
+    it (which goes to the last frame) and the timeline's mark say so."""
+    scene = os.path.join(workdir, 'long.json')
+    with open(scene, 'w') as f:
+        json.dump({'maze': None, 'rod': {'nodes': 40}, 'run': {'duration': 1000, 'output_interval': 0.01}}, f)
+    run = os.path.join(workdir, 'stopped')
+    proc = subprocess.Popen([exe, 'run', scene, '--out', run, '--quiet'], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    deadline = time.time() + 30
+    while time.time() < deadline and not os.path.exists(os.path.join(run, 'frames.vlog')):
+        time.sleep(0.05)
+    time.sleep(0.3)
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    R.check(proc.returncode == -signal.SIGINT and os.path.exists(os.path.join(run, 'summary.json')),
+            'stopped run: Ctrl-C ends the run by SIGINT after writing its summary', f'exit {proc.returncode}: {err[-300:]!r}')
+    server = Server(exe, [run])
+    try:
+        page = Page(driver, Api(server.url))
+        page.open(page.api.page)
+        result = page.wait(lambda d: d.find_elements(By.CSS_SELECTOR, '#summary td[data-key="result"]'), 'the summary')
+        R.check(result[0].text == 'stopped', 'stopped run: the summary\'s result reads "stopped"', repr(result[0].text))
+        notes = page.d.find_elements(By.CSS_SELECTOR, '#summary .failure-note')
+        R.check(len(notes) == 1 and notes[0].text.startswith('stopped by SIGINT (Ctrl-C) at t = '),
+                'stopped run: the note under the summary says who stopped it', repr([n.text for n in notes]))
+        marks = page.d.find_elements(By.CSS_SELECTOR, '.event-mark.failure')
+        R.check(len(marks) == 1 and marks[0].get_attribute('title').startswith('run stopped by SIGINT (Ctrl-C) at t = '),
+                'stopped run: the timeline marks where it was stopped', repr([m.get_attribute('title') for m in marks]))
+        page.shot(shots, 'stopped.png')
+        page.collect_log()
+        R.check(not page.severe, 'no JS errors in the browser log (stopped run)', '; '.join(page.severe[:5]))
+    finally:
+        server.stop('stopped run', driver)
+
+
 # A feed into a dead end that squashes the rod: a run with warnings.
 CRAMMED_SCENE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scenes', 'crammed_feed.json')
 
@@ -1044,6 +1079,7 @@ def main():
             if not args.url:
                 section('live follow', check_live, driver, args.vascsim, args.run, args.screenshots, workdir)
                 section('warnings', check_warnings, driver, args.vascsim, args.screenshots, workdir)
+                section('stopped run', check_stopped_run, driver, args.vascsim, args.screenshots, workdir)
             if args.url_b or (args.vascsim and args.run_b and not args.url):
                 if args.url_b:
                     url_b = args.url_b

@@ -1147,7 +1147,7 @@
     const mN = (v) => (v === null || v === undefined ? '–' : `${fmtSig(v * 1e3, 4)} mN`);
     const sec = (v) => (v === null || v === undefined ? '–' : `${Number(v).toFixed(3)} s`);
     const rows = [
-      ['result', (s) => (!s ? ['–', ''] : s.ok ? ['ok', 'ok'] : ['failed', 'bad'])],
+      ['result', (s) => (!s ? ['–', ''] : s.ok ? ['ok', 'ok'] : [s.stopped_by ? 'stopped' : 'failed', 'bad'])],
       ['goal reached at', (s) => {
         const n = nav(s);
         if (!s || n.goal_reached === undefined || n.goal_reached === null) return ['–', ''];

@@ -1,0 +1,67 @@
+#include "apps/vascsim/stop_on_signal.h"
+
+#include <cstdio>
+#include <string>
+
+namespace vascsim::cli {
+
+namespace {
+
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+volatile std::sig_atomic_t g_stop_signal = 0;
+struct sigaction g_previous[3];  // a copy the handler may read: StopOnSignal's, set before installing
+
+extern "C" void request_stop(int signal) {
+  if (g_stop_signal == 0) {
+    g_stop_signal = signal;
+    return;
+  }
+  // The same signal again (a second Ctrl-C): the user does not want to wait for the step to end.
+  // Another one is the same request (a terminal's Ctrl-C reaches a sweep's runs, which the sweep
+  // then sends SIGTERM).
+  if (signal != g_stop_signal) return;
+  for (int k = 0; k < 3; ++k)
+    if (kStopSignals[k] == signal) ::sigaction(signal, &g_previous[k], nullptr);  // async-signal-safe
+  ::raise(signal);
+}
+
+}  // namespace
+
+StopOnSignal::StopOnSignal() {
+  g_stop_signal = 0;
+  for (int k = 0; k < 3; ++k) ::sigaction(kStopSignals[k], nullptr, &previous_[k]);
+  for (int k = 0; k < 3; ++k) g_previous[k] = previous_[k];
+  struct sigaction ours {};
+  ours.sa_handler = request_stop;
+  sigemptyset(&ours.sa_mask);
+  ours.sa_flags = SA_RESTART;
+  for (int k = 0; k < 3; ++k) {
+    // A signal the process was started ignoring (nohup's SIGHUP) stays ignored.
+    if (!(previous_[k].sa_flags & SA_SIGINFO) && previous_[k].sa_handler == SIG_IGN) continue;
+    ::sigaction(kStopSignals[k], &ours, nullptr);
+  }
+}
+
+StopOnSignal::~StopOnSignal() {
+  for (int k = 0; k < 3; ++k) ::sigaction(kStopSignals[k], &previous_[k], nullptr);
+}
+
+std::string StopOnSignal::reason() const {
+  switch (g_stop_signal) {
+    case 0: return "";
+    case SIGINT: return "SIGINT (Ctrl-C)";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    default: return "signal " + std::to_string(static_cast<int>(g_stop_signal));
+  }
+}
+
+void StopOnSignal::raise_again() {
+  const int signal = g_stop_signal;
+  if (signal == 0) return;
+  std::fflush(nullptr);  // what was printed, also into a pipe or file, before the process ends
+  for (int k = 0; k < 3; ++k) ::sigaction(kStopSignals[k], &previous_[k], nullptr);
+  ::raise(signal);
+}
+
+}  // namespace vascsim::cli

@@ -1,0 +1,79 @@
+#include "sim/io/log_run_check.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "sim/io/run_summary_reader.h"
+#include "sim/log/frame_log.h"
+#include "sim/scene/input_error.h"
+
+namespace vascsim {
+
+using nlohmann::json;
+
+namespace {
+
+// For a summary saying its run failed or was stopped: what is made from the log (a video, a
+// still, a CSV) ends with the last frame before that.
+std::string early_end_warning(const json& summary, const std::string& summary_path, bool stopped) {
+  const auto failure = summary.find("failure");
+  return "warning: " + summary_path + (stopped ? ": the run was stopped before its end (" : ": the run failed (") +
+         (failure != summary.end() && failure->is_string() ? failure->get<std::string>() : "no /failure given") +
+         "); its log ends with the last frame before " + (stopped ? "it stopped" : "the failure");
+}
+
+}  // namespace
+
+LogRunCheck check_log_against_run(const std::string& run_path, std::size_t log_frames,
+                                  const std::string& log_scene_hash) {
+  namespace fs = std::filesystem;
+  LogRunCheck check;
+  const auto warn = [&](const std::string& warning) {
+    if (!warning.empty()) check.warnings.push_back(warning);
+  };
+  warn(incomplete_run_warning(run_path));
+  const std::string run_dir = run_dir_of(run_path);
+  if (run_dir.empty()) return check;
+  const fs::path log_path = fs::path(run_dir) / "frames.vlog", summary_path = fs::path(run_dir) / "summary.json";
+  const std::string not_checked = ", so " + log_path.string() + " was not checked against it (its own checks still apply)";
+  std::optional<json> summary;
+  try {
+    summary = read_run_summary(run_dir);
+  } catch (const InputError& e) {
+    warn(std::string("warning: ") + e.what() + not_checked);
+    return check;
+  }
+  if (!summary) return check;
+  if (!summary->is_object()) {
+    warn("warning: " + summary_path.string() + ": not a JSON object" + not_checked);
+    return check;
+  }
+  const json::json_pointer hash_pointer("/provenance/scene_hash");
+  if (summary->contains(hash_pointer) && (*summary)[hash_pointer].is_string()) {
+    const auto summary_hash = (*summary)[hash_pointer].get<std::string>();
+    if (!summary_hash.empty() && !log_scene_hash.empty() && summary_hash != log_scene_hash)
+      throw InputError(summary_path.string() + ": /provenance/scene_hash is " + summary_hash + ", but " + log_path.string() +
+                       " was written by a run of the scene with hash " + log_scene_hash +
+                       ": the summary is another run's (run the scene again, or copy the run directory whole)");
+  }
+  const json* frames = summary->contains("frames") ? &(*summary)["frames"] : nullptr;
+  if (!frames || !frames->is_number_unsigned())
+    warn("warning: " + summary_path.string() + ": no /frames count (not a summary vascsim wrote)" + not_checked);
+  else if (frames->get<std::uint64_t>() != log_frames)
+    throw InputError(log_path.string() + ": " + std::to_string(log_frames) + " frames, but " + summary_path.string() +
+                     " says the run wrote " + std::to_string(frames->get<std::uint64_t>()) +
+                     ": the log was cut or appended to after the run ended (run it again, or copy it again)");
+  const auto ok = summary->find("ok");
+  if (ok != summary->end() && ok->is_boolean() && !ok->get<bool>()) {
+    EarlyEnd end;
+    const auto who = summary->find("stopped_by");
+    end.stopped = who != summary->end() && who->is_string() && !who->get<std::string>().empty();
+    const auto reached = summary->find("simulated_time");
+    if (reached != summary->end() && reached->is_number() && reached->get<double>() >= 0.0) end.at = reached->get<double>();
+    warn(early_end_warning(*summary, summary_path.string(), end.stopped));
+    check.ended_early = end;
+  }
+  return check;
+}
+
+}  // namespace vascsim
