@@ -130,6 +130,36 @@ TEST(RenderFailedRun, TheNarrowFramesCardHoldsTheRow) {
   }
 }
 
+// The smallest frames (a thumbnail) of a compared pair that both ended early need two such rows:
+// each is drawn, red, inside the frame (the card leaves out its title for them).
+TEST(RenderFailedRun, AThumbnailOfTwoRunsThatEndedEarlyHoldsBothRows) {
+  ScratchDir dir("failed_run_thumbnail");
+  SyntheticLogSpec spec;
+  const std::string a = testing::make_run(dir, spec, "a"), b = testing::make_run(dir, spec, "b");
+  FrameSource run_a(a), run_b(b);
+  FrameState state, other;
+  run_a.frame(0, state);
+  run_b.frame(0, other);
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{120, 90}, {160, 120}, {100, 100}}) {
+    View view;
+    view.width = w;
+    view.height = h;
+    FramePainter painter(run_a.metadata(), view, choose_force_scales(run_a, view), state,
+                         {EarlyEnd{0.5, false}, EarlyEnd{0.75, true}});
+    Canvas canvas(w, h);
+    painter.paint(canvas, state, {}, &other);
+    const std::string size = std::to_string(w) + " x " + std::to_string(h);
+    ASSERT_EQ(painter.hud_fields().size(), 6u) << size;
+    ASSERT_FALSE(painter.panel_items().empty()) << size;
+    const auto& hud = painter.panel_items().front();
+    EXPECT_LE(hud.bottom, static_cast<float>(h)) << size << ": the card's last row is cut off";
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w) * h * 4);
+    canvas.finish(rgba.data());
+    // Both rows are red, the lower one too: the last sixth of the card.
+    EXPECT_GT(red_pixels(rgba, w, hud.left, hud.right, hud.bottom - (hud.bottom - hud.top) / 6, hud.bottom), 5) << size;
+  }
+}
+
 // Compare mode: a compared run that failed stops moving over the map; the HUD says why.
 TEST(RenderFailedRun, AComparedRunThatFailedIsSaidToHaveFailed) {
   ScratchDir dir("failed_run_overlay");
