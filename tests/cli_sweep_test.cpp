@@ -2,8 +2,12 @@
 // failed runs and --retry-failed, Ctrl-C, --run-index and --shard, the merged table and its
 // determinism, the files for GNU parallel and Slurm, and bad input (exit code 2, the file and
 // JSON path named, nothing written). Runs are the default maze for 0.3 s: a few ms each.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -170,6 +174,46 @@ TEST(SweepCli, CtrlCStopsCleanlyAndAResumeGivesTheSameTable) {
   ASSERT_EQ(sweep_command(sweep + " --out " + dir + "/whole --jobs 2 --quiet").exit_code, 0);
   EXPECT_EQ(deterministic_columns(read_text(dir + "/out/results.csv")),
             deterministic_columns(read_text(dir + "/whole/results.csv")));
+}
+
+// Slurm's time limit (or scancel) sends SIGTERM to every process of the task: the sweep and its
+// run. The run gets a second SIGTERM when the sweep passes its own on, and still ends as a run
+// stopped by the first: it writes a summary that says so, and the sweep records no status for it
+// (it is run again when the array is submitted again).
+TEST(SweepCli, SigtermToTheWholeTaskStopsEachRunWithASummaryThatSaysSo) {
+  const std::string dir = fresh_temp_dir("sweep_group_sigterm");
+  const std::string sweep = dir + "/long.json";
+  write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
+                        R"(", "axes": {"/run/duration": [1000, 1001], "/control/kp": [4]}})");
+  const std::string out = dir + "/out", printed = dir + "/printed.txt";
+  const pid_t task = ::fork();
+  if (task == 0) {
+    ::setsid();  // the sweep leads a process group of its own, as a Slurm task's processes are its own
+    const int file = ::open(printed.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(file, 1);
+    ::dup2(file, 2);
+    ::execl(VASCSIM_EXE, VASCSIM_EXE, "sweep", sweep.c_str(), "--out", out.c_str(), "--jobs", "2", "--no-merge",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  for (int k = 0; k < 6000 && !(fs::exists(out + "/runs/0000/frames.vlog") && fs::exists(out + "/runs/0001/frames.vlog"));
+       ++k)
+    ::usleep(10000);  // up to 60 s
+  ::usleep(200000);
+  ::kill(-task, SIGTERM);
+  int status = 0;
+  ASSERT_EQ(::waitpid(task, &status, 0), task);
+  const std::string output = read_text(printed);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 143) << status << "\n" << output;
+  for (const char* id : {"0000", "0001"}) {
+    const std::string run = out + "/runs/" + id;
+    ASSERT_TRUE(fs::exists(run + "/summary.json")) << run << ": killed before it wrote its summary\n"
+                                                   << read_text(run + "/run.log");
+    const nlohmann::json summary = nlohmann::json::parse(read_text(run + "/summary.json"));
+    EXPECT_EQ(summary["stopped_by"], "SIGTERM") << run;
+    EXPECT_EQ(summary["ok"], false) << run;
+    EXPECT_FALSE(fs::exists(run + "/status.json")) << run << ": a run the sweep stopped was recorded";
+  }
 }
 
 TEST(SweepCli, ASweepKilledWithSigkillTakesItsRunsWithIt) {

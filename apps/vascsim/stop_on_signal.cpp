@@ -16,10 +16,11 @@ extern "C" void request_stop(int signal) {
     g_stop_signal = signal;
     return;
   }
-  // The same signal again (a second Ctrl-C): the user does not want to wait for the step to end.
-  // Another one is the same request (a terminal's Ctrl-C reaches a sweep's runs, which the sweep
-  // then sends SIGTERM).
-  if (signal != g_stop_signal) return;
+  // A second Ctrl-C: the user does not want to wait for the step to end. Anything else is the
+  // same request again: a terminal's Ctrl-C reaches a sweep's runs, which the sweep then sends
+  // SIGTERM; Slurm's time limit sends SIGTERM to the sweep and its run, and the sweep passes
+  // another on. Those who cannot wait send SIGKILL (Slurm after KillWait).
+  if (signal != SIGINT || g_stop_signal != SIGINT) return;
   for (int k = 0; k < 3; ++k)
     if (kStopSignals[k] == signal) ::sigaction(signal, &g_previous[k], nullptr);  // async-signal-safe
   ::raise(signal);
