@@ -1,7 +1,6 @@
 // `vascsim run` as a user drives it: outputs, refusal to overwrite, bad scenes, a diverging run
 // that keeps its frames and says why, and a killed run that leaves a readable log.
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -123,17 +122,8 @@ TEST(CliRun, ARunStoppedBySignalWritesASummaryThatSaysSoAndEndsByTheSignal) {
   write_text(dir + "/long.json", R"({"maze": null, "rod": {"nodes": 40}, "run": {"duration": 1000, "output_interval": 0.01}})");
   for (const auto& [signal, name] : {std::pair<int, std::string>{SIGINT, "SIGINT (Ctrl-C)"}, {SIGTERM, "SIGTERM"}}) {
     const std::string out = dir + "/out" + std::to_string(signal), printed = dir + "/printed.txt";
-    const pid_t run = ::fork();
-    if (run == 0) {
-      const int file = ::open(printed.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      ::dup2(file, 1);
-      ::dup2(file, 2);
-      ::execl(VASCSIM_EXE, VASCSIM_EXE, "run", (dir + "/long.json").c_str(), "--out", out.c_str(), "--quiet",
-              static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    for (int k = 0; k < 3000 && !fs::exists(out + "/frames.vlog"); ++k) ::usleep(10000);  // up to 30 s
-    ASSERT_TRUE(fs::exists(out + "/frames.vlog")) << "the run never started";
+    const pid_t run = start_vascsim({"run", dir + "/long.json", "--out", out, "--quiet"}, printed);
+    ASSERT_TRUE(wait_for_files({out + "/frames.vlog"})) << "the run never started";
     ::usleep(300000);
     ::kill(run, signal);
     int status = 0;
@@ -281,17 +271,8 @@ TEST(CliRun, ASecondRunIntoADirectoryBeingWrittenIsRefused) {
   write_text(dir + "/long.json", R"({"maze": null, "rod": {"nodes": 40}, "run": {"duration": 1000}})");
   write_text(dir + "/short.json", R"({"maze": null, "rod": {"nodes": 10}, "run": {"duration": 0.02}})");
   const std::string out = dir + "/out";
-  const pid_t first = ::fork();
-  if (first == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, 1);
-    ::dup2(null, 2);
-    ::execl(VASCSIM_EXE, VASCSIM_EXE, "run", (dir + "/long.json").c_str(), "--out", out.c_str(), "--quiet",
-            static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  for (int k = 0; k < 3000 && !fs::exists(out + "/frames.vlog"); ++k) ::usleep(10000);  // up to 30 s
-  ASSERT_TRUE(fs::exists(out + "/frames.vlog")) << "the first run never started";
+  const pid_t first = start_vascsim({"run", dir + "/long.json", "--out", out, "--quiet"});
+  ASSERT_TRUE(wait_for_files({out + "/frames.vlog"})) << "the first run never started";
   CommandResult r = run_vascsim("run " + dir + "/short.json --out " + out + " --quiet --force");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find(out + ": another vascsim run is writing into this directory"), std::string::npos) << r.output;

@@ -2,7 +2,6 @@
 // failed runs and --retry-failed, Ctrl-C, --run-index and --shard, the merged table and its
 // determinism, the files for GNU parallel and Slurm, and bad input (exit code 2, the file and
 // JSON path named, nothing written). Runs are the default maze for 0.3 s: a few ms each.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -186,19 +185,8 @@ TEST(SweepCli, SigtermToTheWholeTaskStopsEachRunWithASummaryThatSaysSo) {
   write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
                         R"(", "axes": {"/run/duration": [1000, 1001], "/control/kp": [4]}})");
   const std::string out = dir + "/out", printed = dir + "/printed.txt";
-  const pid_t task = ::fork();
-  if (task == 0) {
-    ::setsid();  // the sweep leads a process group of its own, as a Slurm task's processes are its own
-    const int file = ::open(printed.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(file, 1);
-    ::dup2(file, 2);
-    ::execl(VASCSIM_EXE, VASCSIM_EXE, "sweep", sweep.c_str(), "--out", out.c_str(), "--jobs", "2", "--no-merge",
-            static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  for (int k = 0; k < 6000 && !(fs::exists(out + "/runs/0000/frames.vlog") && fs::exists(out + "/runs/0001/frames.vlog"));
-       ++k)
-    ::usleep(10000);  // up to 60 s
+  const pid_t task = start_vascsim({"sweep", sweep, "--out", out, "--jobs", "2", "--no-merge"}, printed, true);
+  wait_for_files({out + "/runs/0000/frames.vlog", out + "/runs/0001/frames.vlog"}, 60);
   ::usleep(200000);
   ::kill(-task, SIGTERM);
   int status = 0;

@@ -1,5 +1,6 @@
 #include "tests/cli_test_support.h"
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -38,6 +39,35 @@ CommandResult run_vascsim(const std::string& arguments) {
 CommandResult run_vascsim_killed_after(const std::string& arguments, double seconds) {
   // coreutils timeout sends the signal to the command itself, as a user's kill -9 would.
   return run_vascsim_via("timeout -s KILL " + std::to_string(seconds) + " " + std::string(VASCSIM_EXE) + " " + arguments);
+}
+
+pid_t start_vascsim(const std::vector<std::string>& arguments, const std::string& output, bool own_process_group) {
+  std::vector<std::string> words = {VASCSIM_EXE};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    if (own_process_group) ::setsid();
+    const int file = ::open(output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(file, STDOUT_FILENO);
+    ::dup2(file, STDERR_FILENO);
+    ::execv(VASCSIM_EXE, argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+bool wait_for_files(const std::vector<std::string>& paths, double seconds) {
+  const auto all_there = [&] {
+    for (const std::string& path : paths)
+      if (!std::filesystem::exists(path)) return false;
+    return true;
+  };
+  for (int k = 0; k < static_cast<int>(seconds * 100) && !all_there(); ++k) ::usleep(10000);
+  return all_there();
 }
 
 std::string fresh_temp_dir(const std::string& name) {

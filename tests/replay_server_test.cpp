@@ -372,6 +372,16 @@ void append_live_frame(FrameLogWriter& writer, int k) {
   writer.append(0.1 * k, {0.0, 0.0, 0.001 * k, 0.0, 0.002 * k, 0.001});
 }
 
+// DIR/run holding the log of twelve such frames, complete (t = 0 .. 1.1 s), and no summary.
+std::string make_twelve_frame_run(const ScratchDir& dir) {
+  const std::string run = dir / "run";
+  fs::create_directories(run);
+  FrameLogWriter writer(run + "/frames.vlog", live_log_header());
+  for (int k = 0; k < 12; ++k) append_live_frame(writer, k);
+  writer.close();
+  return run;
+}
+
 // A log that a run is still writing: the server sees appended frames, then the summary.
 TEST(ReplayServer, LiveFollowSeesFramesAppendedAfterStart) {
   ScratchDir dir("replay_live");
@@ -416,11 +426,7 @@ TEST(ReplayServer, LiveFollowSeesFramesAppendedAfterStart) {
 // as `vascsim render`'s pictures of it do (the same PNG bytes).
 TEST(ReplayServer, ALiveRunThatFailsIsSaidToHaveFailedOnceItsSummaryAppears) {
   ScratchDir dir("replay_live_failed");
-  const std::string run = dir / "run";
-  fs::create_directories(run);
-  FrameLogWriter writer(run + "/frames.vlog", live_log_header());
-  for (int k = 0; k < 12; ++k) append_live_frame(writer, k);
-  writer.close();
+  const std::string run = make_twelve_frame_run(dir);
   LiveServer s({{run}});
   const std::string frame = "/api/frame.png?t=1&width=320&height=180";
   const auto running = s.get(frame);
@@ -440,11 +446,7 @@ TEST(ReplayServer, ALiveRunThatFailsIsSaidToHaveFailedOnceItsSummaryAppears) {
 // not as failed: the simulation did not fail, someone ended it.
 TEST(ReplayServer, ARunStoppedBySignalIsMarkedStoppedOnTheTimeline) {
   ScratchDir dir("replay_stopped");
-  const std::string run = dir / "run";
-  fs::create_directories(run);
-  FrameLogWriter writer(run + "/frames.vlog", live_log_header());
-  for (int k = 0; k < 12; ++k) append_live_frame(writer, k);
-  writer.close();
+  const std::string run = make_twelve_frame_run(dir);
   vascsim::test::write_text(run + "/summary.json", R"json({"format": "vascsim-summary/1", "ok": false,
       "failure": "stopped by SIGTERM at t = 1.13 s, before the run's end (20 s)", "stopped_by": "SIGTERM",
       "frames": 12, "simulated_time": 1.13})json");
