@@ -223,10 +223,8 @@ int run_run_command(int argc, char** argv) {
   FrameLogWriter writer(log_path, log_header);
   FrameLogSink sink(writer);
   Progress progress(!args.flag("quiet"), scene.run.duration);
-  // Until the summary is written. Not for a static solve, one step that does not ask: Ctrl-C ends it at once.
-  std::optional<StopOnSignal> stop;
-  if (scene.solver.mode != SolveMode::kStatic) stop.emplace();
-  const bool ok = run.run(sink, [&](double t) { progress.update(t); }, [&] { return stop ? stop->reason() : ""; });
+  std::optional<StopOnSignal> stop(std::in_place);  // until the summary is written
+  const bool ok = run.run(sink, [&](double t) { progress.update(t); }, [&] { return stop->reason(); });
   progress.finish();
   writer.close();
 
@@ -265,7 +263,7 @@ int run_run_command(int argc, char** argv) {
   if (!s.stopped_by.empty())
     std::fprintf(stderr, "vascsim run: %s; the frames computed until then are kept\n", s.failure.c_str());
   // Also a signal that came after the last step: the run is complete, but nothing more is done.
-  if (stop && !stop->reason().empty()) {
+  if (!stop->reason().empty()) {
     stop->raise_again();  // ends the process by the signal, as without the summary
     return 130;
   }

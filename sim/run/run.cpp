@@ -393,10 +393,10 @@ void Run::record(FrameSink& sink, const State& frame) {
   if (strain > kLargeAxialStrain) stats_.warnings.large_axial_strain.note(frame.t);
 }
 
-bool Run::solve_equilibrium(FrameSink& sink) {
+bool Run::solve_equilibrium(FrameSink& sink, const std::function<std::string()>& stop_reason) {
   const auto wall_start = Clock::now();
   record(sink, state_);
-  const StaticReport report = solve_static(*model_, state_, workspace_, last_controls_);
+  const StaticReport report = solve_static(*model_, state_, workspace_, last_controls_, stop_reason);
   stats_.steps = report.increments;
   stats_.rejected_steps = report.rejected + report.stability_cuts;
   stats_.newton_iterations = report.iterations;  // of every increment, failed ones too
@@ -414,6 +414,7 @@ bool Run::solve_equilibrium(FrameSink& sink) {
   } else {
     stats_.failed = true;
     stats_.failure = "static equilibrium: " + report.failure;
+    stats_.stopped_by = report.stopped_by;
   }
   stats_.wall_time = std::chrono::duration<double>(Clock::now() - wall_start).count();
   return report.ok;
@@ -421,7 +422,7 @@ bool Run::solve_equilibrium(FrameSink& sink) {
 
 bool Run::run(FrameSink& sink, const std::function<void(double)>& progress,
               const std::function<std::string()>& stop_reason) {
-  if (model_->solver.mode == SolveMode::kStatic) return solve_equilibrium(sink);
+  if (model_->solver.mode == SolveMode::kStatic) return solve_equilibrium(sink, stop_reason);
   const auto wall_start = Clock::now();
   const double duration = scene_.run.duration;
   const bool controlled = model_->solver.adaptive == StepControl::kError;

@@ -123,7 +123,7 @@ class Run {
   // equilibrium under the full loads at t = 1 (time stands for the load scale).
   // `stop_reason` (may be empty) is asked between steps; a non-empty answer (who asks, e.g.
   // "SIGINT (Ctrl-C)") ends the run there as a failure that statistics().stopped_by names, with
-  // every frame computed so far written. A static solve is one step and is not asked.
+  // every frame computed so far written. A static solve asks before each load increment.
   bool run(FrameSink& sink, const std::function<void(double t)>& progress = {},
            const std::function<std::string()>& stop_reason = {});
 
@@ -144,7 +144,7 @@ class Run {
   // (from `start` to state_) can be interpolated, that is, keeps every barrier's gap open.
   bool frames_interpolable(const State& start, const Controls& controls, std::size_t frame) const;
   NewtonStopTolerance newton_stop() const;
-  bool solve_equilibrium(FrameSink& sink);
+  bool solve_equilibrium(FrameSink& sink, const std::function<std::string()>& stop_reason);
   // Writes a frame: state_ itself or a state inside the last step (error control).
   void record(FrameSink& sink, const State& frame);
   // Force channel `name` (one of force_channels_) at a solved state (state_ or step_start_), with

@@ -21,7 +21,8 @@ int negative_pivots_at(const Model& model, const NewtonProblem& p, const Eigen::
 
 }  // namespace
 
-StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls) {
+StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls,
+                          const std::function<std::string()>& stop_reason) {
   StaticReport report;
   set_targets(model, controls, state.t, ws);
   Eigen::VectorXd x = state.x;
@@ -48,6 +49,15 @@ StaticReport solve_static(const Model& model, State& state, Workspace& ws, const
   };
   std::optional<Jump> jump;
   while (lambda < 1.0) {
+    if (stop_reason) {
+      if (std::string who = stop_reason(); !who.empty()) {
+        char buf[120];
+        std::snprintf(buf, sizeof buf, " at load factor %.4g of 1", lambda);
+        report.failure = "stopped by " + who + buf;
+        report.stopped_by = std::move(who);
+        break;
+      }
+    }
     const double next = std::min(1.0, lambda + increment);
     p.load_scale = next;
     ws.x = x;

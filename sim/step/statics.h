@@ -5,6 +5,7 @@
 // the report says so). Validation and many user questions are static (issue 3).
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "sim/step/controls.h"
@@ -44,6 +45,7 @@ struct StaticReport {
   double eigenvalue_round_off = 0.0;
   bool stability_undecided = false;
   std::string failure;
+  std::string stopped_by;  // who ended the solve before full load (stop_reason's answer), or empty
 };
 
 // Solves from state.x; on success state.x is the equilibrium, v = 0 and the BDF2 history reset.
@@ -55,6 +57,10 @@ struct StaticReport {
 // load is left for a stable one; if that fails the unstable one is returned (report.ok,
 // negative_pivots > 0). Where Newton fails on the smaller increments, the solve takes the cut
 // one after all and counts it (report.branch_jumps).
-StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls);
+// `stop_reason` (may be empty) is asked before each increment, as Run::run asks between steps: a
+// non-empty answer ends the solve there, failed, with `stopped_by` set and state.x the last
+// converged increment.
+StaticReport solve_static(const Model& model, State& state, Workspace& ws, const Controls& controls,
+                          const std::function<std::string()>& stop_reason = {});
 
 }  // namespace vascsim
