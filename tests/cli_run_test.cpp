@@ -122,7 +122,7 @@ TEST(CliRun, ARunStoppedBySignalWritesASummaryThatSaysSoAndEndsByTheSignal) {
   write_text(dir + "/long.json", R"({"maze": null, "rod": {"nodes": 40}, "run": {"duration": 1000, "output_interval": 0.01}})");
   for (const auto& [signal, name] : {std::pair<int, std::string>{SIGINT, "SIGINT (Ctrl-C)"}, {SIGTERM, "SIGTERM"}}) {
     const std::string out = dir + "/out" + std::to_string(signal), printed = dir + "/printed.txt";
-    const pid_t run = start_vascsim({"run", dir + "/long.json", "--out", out, "--quiet"}, printed);
+    const pid_t run = start_vascsim({"run", dir + "/long.json", "--out", out, "--quiet"}, {printed});
     ASSERT_TRUE(wait_for_files({out + "/frames.vlog"})) << "the run never started";
     ::usleep(300000);
     ::kill(run, signal);
@@ -156,6 +156,28 @@ TEST(CliRun, ARunStoppedBySignalWritesASummaryThatSaysSoAndEndsByTheSignal) {
               std::string::npos)
         << csv.output;
   }
+  fs::remove_all(dir);
+}
+
+// A run started ignoring SIGHUP (under nohup, to outlive its terminal) goes on when the terminal
+// closes; SIGTERM still stops it as above.
+TEST(CliRun, ARunStartedUnderNohupGoesOnWhenItsTerminalCloses) {
+  const std::string dir = fresh_temp_dir("run_nohup");
+  write_text(dir + "/long.json", R"({"maze": null, "rod": {"nodes": 40}, "run": {"duration": 1000, "output_interval": 0.01}})");
+  const std::string out = dir + "/out";
+  StartOptions nohup;
+  nohup.ignored_signal = SIGHUP;
+  const pid_t run = start_vascsim({"run", dir + "/long.json", "--out", out, "--quiet"}, nohup);
+  ASSERT_TRUE(wait_for_files({out + "/frames.vlog"})) << "the run never started";
+  ::kill(run, SIGHUP);
+  ::usleep(500000);  // a run that took it as a stop ends within a step (about 20 ms)
+  int status = 0;
+  EXPECT_EQ(::waitpid(run, &status, WNOHANG), 0) << "the run ended on SIGHUP";
+  EXPECT_FALSE(fs::exists(out + "/summary.json"));
+  ::kill(run, SIGTERM);
+  ASSERT_EQ(::waitpid(run, &status, 0), run);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
+  EXPECT_EQ(nlohmann::json::parse(read_text(out + "/summary.json"))["stopped_by"], "SIGTERM");
   fs::remove_all(dir);
 }
 

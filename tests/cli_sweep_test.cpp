@@ -185,7 +185,7 @@ TEST(SweepCli, SigtermToTheWholeTaskStopsEachRunWithASummaryThatSaysSo) {
   write_text(sweep, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/maze_default.json") +
                         R"(", "axes": {"/run/duration": [1000, 1001], "/control/kp": [4]}})");
   const std::string out = dir + "/out", printed = dir + "/printed.txt";
-  const pid_t task = start_vascsim({"sweep", sweep, "--out", out, "--jobs", "2", "--no-merge"}, printed, true);
+  const pid_t task = start_vascsim({"sweep", sweep, "--out", out, "--jobs", "2", "--no-merge"}, {printed, true});
   wait_for_files({out + "/runs/0000/frames.vlog", out + "/runs/0001/frames.vlog"}, 60);
   ::usleep(200000);
   ::kill(-task, SIGTERM);

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -41,7 +42,7 @@ CommandResult run_vascsim_killed_after(const std::string& arguments, double seco
   return run_vascsim_via("timeout -s KILL " + std::to_string(seconds) + " " + std::string(VASCSIM_EXE) + " " + arguments);
 }
 
-pid_t start_vascsim(const std::vector<std::string>& arguments, const std::string& output, bool own_process_group) {
+pid_t start_vascsim(const std::vector<std::string>& arguments, const StartOptions& options) {
   std::vector<std::string> words = {VASCSIM_EXE};
   words.insert(words.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;
@@ -50,8 +51,9 @@ pid_t start_vascsim(const std::vector<std::string>& arguments, const std::string
   const pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
-    if (own_process_group) ::setsid();
-    const int file = ::open(output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (options.own_process_group) ::setsid();
+    if (options.ignored_signal) std::signal(options.ignored_signal, SIG_IGN);  // kept across exec
+    const int file = ::open(options.output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(file, STDOUT_FILENO);
     ::dup2(file, STDERR_FILENO);
     ::execv(VASCSIM_EXE, argv.data());

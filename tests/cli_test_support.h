@@ -20,11 +20,15 @@ CommandResult run_vascsim(const std::string& arguments);
 CommandResult run_shell(const std::string& command_line);
 // As run_vascsim, but the process is killed (SIGKILL) after `seconds` if still running.
 CommandResult run_vascsim_killed_after(const std::string& arguments, double seconds);
-// Starts `VASCSIM_EXE <arguments>` without waiting for it, its stdout and stderr into the file
-// `output`; with `own_process_group`, in a process group (and session) of its own, as a Slurm
-// task's processes are. For tests that signal a running command. Returns its process id.
-pid_t start_vascsim(const std::vector<std::string>& arguments, const std::string& output = "/dev/null",
-                    bool own_process_group = false);
+// How start_vascsim starts the command.
+struct StartOptions {
+  std::string output = "/dev/null";  // the file its stdout and stderr go to
+  bool own_process_group = false;    // in a process group (and session) of its own, as a Slurm task's
+  int ignored_signal = 0;            // a signal it starts ignoring, as nohup's SIGHUP, or 0
+};
+// Starts `VASCSIM_EXE <arguments>` without waiting for it, for tests that signal a running
+// command. Returns its process id.
+pid_t start_vascsim(const std::vector<std::string>& arguments, const StartOptions& options = {});
 // Waits until every one of `paths` exists, up to `seconds`; whether they all do.
 bool wait_for_files(const std::vector<std::string>& paths, double seconds = 30);
 // A fresh, empty temporary directory unique to this test process and `name`.
