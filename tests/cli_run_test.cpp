@@ -119,7 +119,7 @@ TEST(CliRun, StaticModeRecordsTheUnloadedRodAndItsEquilibrium) {
 // run warns that it was stopped (its pictures say "Run stopped": tests/render_failed_run_test.cpp).
 TEST(CliRun, ARunStoppedBySignalWritesASummaryThatSaysSoAndEndsByTheSignal) {
   const std::string dir = fresh_temp_dir("run_stopped");
-  write_text(dir + "/long.json", R"({"maze": null, "rod": {"nodes": 40}, "run": {"duration": 1000, "output_interval": 0.01}})");
+  write_text(dir + "/long.json", kLongRunScene);
   for (const auto& [signal, name] : {std::pair<int, std::string>{SIGINT, "SIGINT (Ctrl-C)"}, {SIGTERM, "SIGTERM"}}) {
     const std::string out = dir + "/out" + std::to_string(signal), printed = dir + "/printed.txt";
     const pid_t run = start_vascsim({"run", dir + "/long.json", "--out", out, "--quiet"}, {printed});
@@ -163,14 +163,14 @@ TEST(CliRun, ARunStoppedBySignalWritesASummaryThatSaysSoAndEndsByTheSignal) {
 // closes; SIGTERM still stops it as above.
 TEST(CliRun, ARunStartedUnderNohupGoesOnWhenItsTerminalCloses) {
   const std::string dir = fresh_temp_dir("run_nohup");
-  write_text(dir + "/long.json", R"({"maze": null, "rod": {"nodes": 40}, "run": {"duration": 1000, "output_interval": 0.01}})");
+  write_text(dir + "/long.json", kLongRunScene);
   const std::string out = dir + "/out";
   StartOptions nohup;
   nohup.ignored_signal = SIGHUP;
   const pid_t run = start_vascsim({"run", dir + "/long.json", "--out", out, "--quiet"}, nohup);
   ASSERT_TRUE(wait_for_files({out + "/frames.vlog"})) << "the run never started";
   ::kill(run, SIGHUP);
-  ::usleep(500000);  // a run that took it as a stop ends within a step (about 20 ms)
+  ::usleep(500000);  // a run that took it as a stop ends within a step (under a millisecond)
   int status = 0;
   EXPECT_EQ(::waitpid(run, &status, WNOHANG), 0) << "the run ended on SIGHUP";
   EXPECT_FALSE(fs::exists(out + "/summary.json"));
@@ -183,7 +183,7 @@ TEST(CliRun, ARunStartedUnderNohupGoesOnWhenItsTerminalCloses) {
 
 TEST(CliRun, KilledRunLeavesAReadableLog) {
   const std::string dir = fresh_temp_dir("run_kill");
-  write_text(dir + "/scene.json", R"({"maze": {"seed": 4}, "run": {"duration": 1000, "output_interval": 0.001}})");
+  write_text(dir + "/scene.json", kLongRunScene);
   const CommandResult r = run_vascsim_killed_after("run " + dir + "/scene.json --out " + dir + "/out --quiet", 1.5);
   (void)r;
   FrameLogReader log(dir + "/out/frames.vlog");
@@ -191,7 +191,16 @@ TEST(CliRun, KilledRunLeavesAReadableLog) {
   ASSERT_GE(n, 2u);
   std::vector<double> last;
   log.read(n - 1, last);
-  EXPECT_NEAR(last[0], 0.001 * static_cast<double>(n - 1), 1e-9);
+  EXPECT_NEAR(last[0], 0.01 * static_cast<double>(n - 1), 1e-9);
+  // Its claim's file stays (no program cleans up after kill -9), but no process holds it: what is
+  // made of the log says the run was killed, not that it may still be running.
+  EXPECT_TRUE(fs::exists(dir + "/out/.vascsim-run.lock"));
+  const CommandResult csv = run_vascsim("export " + dir + "/out --csv " + dir + "/csv");
+  EXPECT_EQ(csv.exit_code, 0) << csv.output;
+  EXPECT_NE(csv.output.find(dir + "/out has no summary.json: no run is writing it, so its run was killed before its end "
+                                  "(kill -9, a crash, the machine out of memory)"),
+            std::string::npos)
+      << csv.output;
   fs::remove_all(dir);
 }
 
@@ -290,7 +299,7 @@ TEST(CliRun, TheSceneAndDirectoriesInTheWayAreRefusedBeforeSimulating) {
 // also when a signal stops it.
 TEST(CliRun, ASecondRunIntoADirectoryBeingWrittenIsRefused) {
   const std::string dir = fresh_temp_dir("run_claim");
-  write_text(dir + "/long.json", R"({"maze": null, "rod": {"nodes": 40}, "run": {"duration": 1000}})");
+  write_text(dir + "/long.json", kLongRunScene);
   write_text(dir + "/short.json", R"({"maze": null, "rod": {"nodes": 10}, "run": {"duration": 0.02}})");
   const std::string out = dir + "/out";
   const pid_t first = start_vascsim({"run", dir + "/long.json", "--out", out, "--quiet"});
@@ -299,6 +308,12 @@ TEST(CliRun, ASecondRunIntoADirectoryBeingWrittenIsRefused) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find(out + ": another vascsim run is writing into this directory"), std::string::npos) << r.output;
   EXPECT_TRUE(fs::exists(out + "/frames.vlog")) << "the second run removed the first one's log";
+  // What is made of the log meanwhile says the run goes on (not that it may have been killed).
+  r = run_vascsim("export " + out + " --csv " + dir + "/csv");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find(out + " has no summary.json yet: a run is still writing it, so its log ends with the frames written so far"),
+            std::string::npos)
+      << r.output;
   ::kill(first, SIGTERM);
   int status = 0;
   ASSERT_EQ(::waitpid(first, &status, 0), first);

@@ -26,6 +26,13 @@ struct StartOptions {
   bool own_process_group = false;    // in a process group (and session) of its own, as a Slurm task's
   int ignored_signal = 0;            // a signal it starts ignoring, as nohup's SIGHUP, or 0
 };
+// A scene whose run outlasts any test's wait in every build, for tests that signal a running run:
+// fixed 10 us steps (about 0.1 s of simulated time per wall second under ASan, a few times that
+// in Release) on a free rod, a frame every 10 ms. Error control takes 20 ms steps on a rod at
+// rest: a Release build ran the 1000 s of such a scene in about 0.5 s, and it ended before the
+// signal came.
+inline constexpr const char* kLongRunScene =
+    R"({"maze": null, "rod": {"nodes": 40}, "solver": {"dt": 1e-5}, "run": {"duration": 1000, "output_interval": 0.01}})";
 // Starts `VASCSIM_EXE <arguments>` without waiting for it, for tests that signal a running
 // command. Returns its process id.
 pid_t start_vascsim(const std::vector<std::string>& arguments, const StartOptions& options = {});
