@@ -1,5 +1,7 @@
 #include "apps/vascsim/stop_on_signal.h"
 
+#include <time.h>
+
 #include <cstdio>
 #include <string>
 
@@ -10,9 +12,23 @@ namespace {
 constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
 volatile std::sig_atomic_t g_stop_signal = 0;
 struct sigaction g_previous[3];  // a copy the handler may read: StopOnSignal's, set before installing
+timespec g_first_stop{};          // when the first stop signal came (CLOCK_MONOTONIC); the handler's own
+
+// A Ctrl-C this soon after the first is the same one again, not the user's second: `timeout -s
+// INT` sends its signal to the command and then to its process group, so the command gets two
+// within microseconds (and, when it handled the first in between, ended without its summary).
+// People do not press Ctrl-C twice within 50 ms.
+constexpr long long kSameRequestNs = 50'000'000;
+
+long long nanoseconds_since(const timespec& then, const timespec& now) {
+  return (static_cast<long long>(now.tv_sec) - then.tv_sec) * 1'000'000'000LL + (now.tv_nsec - then.tv_nsec);
+}
 
 extern "C" void request_stop(int signal) {
+  timespec now{};
+  ::clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
   if (g_stop_signal == 0) {
+    g_first_stop = now;
     g_stop_signal = signal;
     return;
   }
@@ -21,6 +37,7 @@ extern "C" void request_stop(int signal) {
   // SIGTERM; Slurm's time limit sends SIGTERM to the sweep and its run, and the sweep passes
   // another on. Those who cannot wait send SIGKILL (Slurm after KillWait).
   if (signal != SIGINT || g_stop_signal != SIGINT) return;
+  if (nanoseconds_since(g_first_stop, now) < kSameRequestNs) return;
   for (int k = 0; k < 3; ++k)
     if (kStopSignals[k] == signal) ::sigaction(signal, &g_previous[k], nullptr);  // async-signal-safe
   ::raise(signal);
@@ -34,7 +51,8 @@ StopOnSignal::StopOnSignal() {
   for (int k = 0; k < 3; ++k) g_previous[k] = previous_[k];
   struct sigaction ours {};
   ours.sa_handler = request_stop;
-  sigemptyset(&ours.sa_mask);
+  sigemptyset(&ours.sa_mask);  // one stop signal's handler at a time: they share the globals above
+  for (const int signal : kStopSignals) sigaddset(&ours.sa_mask, signal);
   ours.sa_flags = SA_RESTART;
   for (int k = 0; k < 3; ++k) {
     // A signal the process was started ignoring (nohup's SIGHUP) stays ignored.

@@ -2,8 +2,9 @@
 // StopOnSignal lives, the first SIGINT, SIGTERM or SIGHUP only asks the stepper loop to stop
 // (Run::run's stop_reason, checked between steps), so `vascsim run` writes its summary (/ok
 // false, /stopped_by) and the pictures of the run say "Run stopped" instead of passing for a run
-// still being written. A second Ctrl-C ends the process at once; a second SIGTERM (a sweep passing
-// on the one Slurm sent to both) does not.
+// still being written. A second Ctrl-C ends the process at once (one within 50 ms of the first is
+// the same one twice, as `timeout -s INT` sends it); a second SIGTERM (a sweep passing on the one
+// Slurm sent to both) does not.
 // After the summary, raise_again() ends the process by the signal itself, so a shell, a sweep or
 // Slurm still sees a run killed by it.
 #pragma once
