@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "sim/io/output_file.h"
+#include "sim/scene/input_error.h"
 #include "tests/cli_test_support.h"
 
 namespace vascsim {
@@ -80,6 +81,50 @@ TEST(OutputFile, WriteFileAtomicallyLeavesOnlyTheFinalName) {
   for (const auto& e : fs::directory_iterator(dir)) entries += e.path().filename() == "a.json" ? 1 : 100;
   EXPECT_EQ(entries, 1u);
   EXPECT_EQ(test::read_text(dir + "/a.json"), "{}");
+  fs::remove_all(dir);
+}
+
+// A run directory's claim tells a run still writing from one killed with kill -9, which leaves
+// the claim's file but no holder; asking takes nothing, so a run starting meanwhile is not refused.
+TEST(OutputFile, TheRunClaimSaysWhetherARunIsWritingWithoutTakingIt) {
+  const std::string dir = vascsim::test::fresh_temp_dir("run_claim_holder");
+  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kNone) << "never claimed";
+  {
+    RunDirectoryClaim claim(dir);
+    EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kRun);
+    EXPECT_THROW(RunDirectoryClaim second(dir), InputError) << "two claims in one process";
+    EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kRun) << "the refused claim let go of the first";
+  }
+  EXPECT_FALSE(fs::exists(fs::path(dir) / RunDirectoryClaim::kFileName));
+  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kNone);
+
+  // Another process claims the directory and tells us so; we ask while it holds the claim, then
+  // it ends without cleaning up, as kill -9 leaves it.
+  int ready[2], done[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  ASSERT_EQ(::pipe(done), 0);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    RunDirectoryClaim* claim = new RunDirectoryClaim(dir);  // never destroyed: no unlink, as after kill -9
+    (void)claim;
+    char c = 1;
+    (void)!::write(ready[1], &c, 1);
+    (void)!::read(done[0], &c, 1);
+    ::_exit(0);
+  }
+  char c = 0;
+  ASSERT_EQ(::read(ready[0], &c, 1), 1);
+  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kRun);
+  EXPECT_THROW(RunDirectoryClaim refused(dir), InputError);
+  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kRun) << "asking took the claim from its run";
+  ASSERT_EQ(::write(done[1], &c, 1), 1);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  EXPECT_TRUE(fs::exists(fs::path(dir) / RunDirectoryClaim::kFileName)) << "the killed run's claim file stays";
+  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kNone);
+  RunDirectoryClaim next(dir);  // and the next run takes the directory over
+  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kRun);
+  for (int fd : {ready[0], ready[1], done[0], done[1]}) ::close(fd);
   fs::remove_all(dir);
 }
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <thread>
 
@@ -19,6 +20,7 @@
 #include "render/synthetic_log.h"
 #include "render/video_encoder.h"
 #include "sim/io/log_metadata.h"
+#include "sim/io/output_file.h"
 #include "sim/log/frame_log.h"
 #include "tests/cli_test_support.h"
 #include "tests/replay_test_support.h"
@@ -256,15 +258,20 @@ TEST(ReplayServer, BadParametersAre400NamingTheParameter) {
 TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
   ScratchDir dir("replay_nodes");
   const std::string run = synthetic_run(dir, "run", long_spec());
+  auto claim = std::make_unique<RunDirectoryClaim>(run);  // as `vascsim run` holds it while it writes
   LiveServer s({{run}});
   const json info = get_json(s, "/api/run");
   EXPECT_EQ(info["frames"], 101);
   EXPECT_DOUBLE_EQ(info["last_time"].get<double>(), 10.0);
   EXPECT_EQ(info["node_count"], 40);
-  EXPECT_EQ(info["growing"], true) << "a run directory without summary.json is a run still being written";
-  // ... unless its log has not changed for a while: a killed run leaves no summary either.
-  fs::last_write_time(run + "/frames.vlog", fs::file_time_type::clock::now() - std::chrono::hours(1));
+  EXPECT_EQ(info["growing"], true) << "a run directory without summary.json whose run holds its claim is being written";
+  // A run killed with kill -9 leaves its claim's file, which no process holds any more: the log
+  // does not grow, however recently it was written.
+  claim.reset();
+  vascsim::test::write_text(run + "/" + RunDirectoryClaim::kFileName, "");
   EXPECT_EQ(get_json(s, "/api/run")["growing"], false);
+  fs::remove(run + "/" + RunDirectoryClaim::kFileName);
+  EXPECT_EQ(get_json(s, "/api/run")["growing"], false) << "no claim: no run writes there";
 
   render::FrameSource source(run);
   render::FrameState frame;
@@ -387,6 +394,7 @@ TEST(ReplayServer, LiveFollowSeesFramesAppendedAfterStart) {
   ScratchDir dir("replay_live");
   const std::string run = dir / "run";
   fs::create_directories(run);
+  RunDirectoryClaim claim(run);  // as the run writing it holds it
   FrameLogWriter writer(run + "/frames.vlog", live_log_header());
   auto append = [&](int k) { append_live_frame(writer, k); };
   for (int k = 0; k < 5; ++k) append(k);

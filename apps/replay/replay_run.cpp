@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "sim/io/json_fields.h"
+#include "sim/io/output_file.h"
 #include "sim/io/run_summary_reader.h"
 #include "sim/scene/input_error.h"
 
@@ -32,7 +33,8 @@ json pair(double x, double y) { return json::array({number(x), number(y)}); }
 
 // The cached series of one run stay few: a page asks for a handful of channels.
 constexpr std::size_t kMaxCachedSeries = 12;
-// A log without a summary that has not grown for this long is taken as a killed run's.
+// Where a run's claim cannot be asked about: a log without a summary that has not grown for this
+// long is taken as a killed run's.
 constexpr int kStaleLogSeconds = 30;
 
 }  // namespace
@@ -62,11 +64,18 @@ void ReplayRun::refresh() {
   try {
     summary = read_run_summary(run_dir_);
     if (!summary) {
-      // No summary yet: a run still writing, unless the log has not changed for a while (a run
-      // that was killed leaves no summary either).
-      std::error_code ec;
-      const auto written = fs::last_write_time(source_->log_path(), ec);
-      growing_ = !ec && fs::file_time_type::clock::now() - written < std::chrono::seconds(kStaleLogSeconds);
+      // No summary yet: a run still writing if it holds its claim on the directory; a killed one
+      // leaves no summary either. Where the claim cannot be asked about, a run still writing is
+      // one whose log has changed lately.
+      switch (RunDirectoryClaim::holder(run_dir_)) {
+        case RunDirectoryClaim::Holder::kRun: growing_ = true; break;
+        case RunDirectoryClaim::Holder::kNone: growing_ = false; break;
+        case RunDirectoryClaim::Holder::kUnknown: {
+          std::error_code ec;
+          const auto written = fs::last_write_time(source_->log_path(), ec);
+          growing_ = !ec && fs::file_time_type::clock::now() - written < std::chrono::seconds(kStaleLogSeconds);
+        }
+      }
       return;
     }
     summary_ = std::move(*summary);

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "sim/io/output_file.h"
 #include "sim/io/run_summary_reader.h"
 #include "sim/log/frame_log.h"
 #include "sim/scene/input_error.h"
@@ -20,6 +21,25 @@ std::string early_end_warning(const json& summary, const std::string& summary_pa
   return "warning: " + summary_path + (stopped ? ": the run was stopped before its end (" : ": the run failed (") +
          (failure != summary.end() && failure->is_string() ? failure->get<std::string>() : "no /failure given") +
          "); its log ends with the last frame before " + (stopped ? "it stopped" : "the failure");
+}
+
+// For a run directory without summary.json (written last, when a run ends, whether it reached
+// its end, failed or was stopped): whether a run is still writing it or was killed, from the
+// run's claim on the directory. Empty for a finished run and for a log copied out of its run.
+std::string incomplete_run_warning(const std::string& run_path) {
+  const std::string dir = run_dir_of(run_path);
+  std::error_code ec;
+  if (dir.empty() || std::filesystem::exists(std::filesystem::path(dir) / "summary.json", ec)) return "";
+  const std::string lead = "warning: " + dir + " has no summary.json";
+  switch (RunDirectoryClaim::holder(dir)) {
+    case RunDirectoryClaim::Holder::kRun:
+      return lead + " yet: a run is still writing it, so its log ends with the frames written so far";
+    case RunDirectoryClaim::Holder::kNone:
+      return lead + ": no run is writing it, so its run was killed before its end (kill -9, a crash, the machine out of memory) "
+                    "or the directory was copied without it; its log may end early";
+    case RunDirectoryClaim::Holder::kUnknown: break;
+  }
+  return lead + ": the run was killed (kill -9, a crash) or is still being written, so its log may end early";
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ struct LogRunCheck {
 // otherwise be drawn or exported silently shorter or with a frame of garbage; or if both name a
 // scene hash (provenance) and they differ: the summary is another run's (copied beside this log,
 // or left by a run of another scene with as many frames). Returns warnings, each a line: the run
-// directory has no summary (the run was killed or is still writing, so its log may end early); the
+// directory has no summary (the run is still writing, or was killed, so its log may end early); the
 // summary cannot be read or has no frame count (damaged, hand-written, another version's), so the
 // log was not checked against it; the run failed or was stopped (what is made from its log ends
 // with the last frame before that). None for a log copied out of its run.

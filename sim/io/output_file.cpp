@@ -44,20 +44,36 @@ DirectoryLock::DirectoryLock(const std::string& dir) {
 
 DirectoryLock::~DirectoryLock() { ::close(fd_); }
 
+namespace {
+
+// A write lock on all of a file, as F_OFD_SETLK takes it and F_OFD_GETLK asks about it.
+struct flock whole_file_lock() {
+  struct flock lock {};
+  lock.l_type = F_WRLCK;
+  lock.l_whence = SEEK_SET;
+  lock.l_start = 0;
+  lock.l_len = 0;  // to the end, however long
+  lock.l_pid = 0;  // OFD locks require it
+  return lock;
+}
+
+}  // namespace
+
 RunDirectoryClaim::RunDirectoryClaim(const std::string& dir) : path_((fs::path(dir) / kFileName).string()) {
   // A run that ends removes its claim's file: one that opened it just before may lock the removed
   // file, so the lock counts only if the name still leads to the file locked.
   for (int attempt = 0; attempt < 3; ++attempt) {
     fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
     if (fd_ < 0) throw InputError(dir + ": cannot claim the directory for this run (" + path_ + ": " + std::strerror(errno) + ")");
+    struct flock whole = whole_file_lock();
     int result;
-    while ((result = ::flock(fd_, LOCK_EX | LOCK_NB)) != 0 && errno == EINTR) {
+    while ((result = ::fcntl(fd_, F_OFD_SETLK, &whole)) != 0 && errno == EINTR) {
     }
     if (result != 0) {
       const int e = errno;
       ::close(fd_);
       fd_ = -1;
-      if (e == EWOULDBLOCK)
+      if (e == EAGAIN || e == EACCES)
         throw InputError(dir + ": another vascsim run is writing into this directory; wait for it, or choose another --out");
       throw InputError(dir + ": cannot claim the directory for this run (" + std::strerror(e) + ")");
     }
@@ -76,6 +92,17 @@ RunDirectoryClaim::RunDirectoryClaim(const std::string& dir) : path_((fs::path(d
 RunDirectoryClaim::~RunDirectoryClaim() {
   ::unlink(path_.c_str());  // before the lock goes, so a waiting run finds the name free or its own
   ::close(fd_);
+}
+
+RunDirectoryClaim::Holder RunDirectoryClaim::holder(const std::string& dir) {
+  const std::string path = (fs::path(dir) / kFileName).string();
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+  if (fd < 0) return errno == ENOENT ? Holder::kNone : Holder::kUnknown;  // no claim: no run there
+  struct flock probe = whole_file_lock();
+  const int result = ::fcntl(fd, F_OFD_GETLK, &probe);
+  ::close(fd);
+  if (result != 0) return Holder::kUnknown;
+  return probe.l_type == F_UNLCK ? Holder::kNone : Holder::kRun;
 }
 
 void check_replaceable_output(const std::string& path, bool overwrite, const std::vector<std::string>& inputs,

@@ -72,10 +72,13 @@ class OutputFileSet {
 
 // The claim of one `vascsim run` on its output directory, held for the object's life: a second
 // run into the directory while the first writes is refused (two at once left one's log beside
-// the other's summary). A lock of its own (flock on the hidden file DIR/.vascsim-run.lock,
-// removed when the claim ends, also by Ctrl-C or kill; kill -9 leaves it, harmless), not
-// DirectoryLock's: a replay server adding a bookmark to a live run must not wait for the run to
-// end. Throws InputError naming the directory if another process holds it.
+// the other's summary). A lock of its own (an open file description lock, fcntl F_OFD_SETLK, on
+// the hidden file DIR/.vascsim-run.lock, removed when the claim ends, also by Ctrl-C or kill;
+// kill -9 leaves it, harmless), not DirectoryLock's: a replay server adding a bookmark to a live
+// run must not wait for the run to end. An OFD lock rather than flock because it can be asked
+// about without being taken (held()): a reader taking it, even briefly, would make a run starting
+// at that moment refuse its directory. Throws InputError naming the directory if another process
+// (or another claim in this one) holds it.
 class RunDirectoryClaim {
  public:
   explicit RunDirectoryClaim(const std::string& dir);
@@ -84,6 +87,13 @@ class RunDirectoryClaim {
   RunDirectoryClaim& operator=(const RunDirectoryClaim&) = delete;
   // The claim's file name, which a run directory may hold beside a run's outputs.
   static constexpr const char* kFileName = ".vascsim-run.lock";
+
+  // Whether a run holds the claim on `dir` now, that is whether a run is writing there. A run
+  // directory without summary.json whose claim is free holds a run that was killed (kill -9, a
+  // crash, the machine out of memory), not one still being written. kUnknown where the file
+  // system cannot say (one without locks); never throws.
+  enum class Holder { kRun, kNone, kUnknown };
+  static Holder holder(const std::string& dir);
 
  private:
   std::string path_;

@@ -167,13 +167,6 @@ std::string run_dir_of(const std::string& run_path) {
   return log.has_parent_path() ? log.parent_path().string() : ".";
 }
 
-std::string incomplete_run_warning(const std::string& run_path) {
-  const std::string dir = run_dir_of(run_path);
-  std::error_code ec;
-  if (dir.empty() || std::filesystem::exists(std::filesystem::path(dir) / "summary.json", ec)) return "";
-  return "warning: " + dir + " has no summary.json: the run was killed (kill -9, a crash) or is still being written, so its log may end early";
-}
-
 InputError bad_frame_time(const std::string& path, std::size_t i, double t, const char* why) {
   char time[32];
   std::snprintf(time, sizeof time, "%.17g", t);  // all digits: the fault may be in the last ones

@@ -84,10 +84,6 @@ std::string frame_log_path(const std::string& run_path);
 // directly (DIR/frames.vlog), empty for any other file (a log copied out of its run, which no
 // summary describes).
 std::string run_dir_of(const std::string& run_path);
-// For a run directory without summary.json (written last, when a run ends, whether it reached
-// its end or diverged): a warning that the run was killed or is still being written, so its log
-// may end early. Empty for a finished run and for a log that is not a run directory's.
-std::string incomplete_run_warning(const std::string& run_path);
 
 // The one rule for a frame's time (docs/frame-log.md, "Checked times"): finite, >= 0 and not
 // before the previous frame's (`previous`, s; ignored for frame 0). Throws InputError naming the

@@ -18,6 +18,7 @@ probe check runs only when --probe is given.
 """
 import argparse
 import base64
+import fcntl
 import json
 import math
 import os
@@ -953,6 +954,14 @@ def check_warnings(driver, exe, shots, workdir):
         server.stop('warnings', driver)
 
 
+def hold_run_claim(run_dir):
+    """The claim `vascsim run` holds on the directory it writes (sim/io/output_file.h): an open file
+    description lock on DIR/.vascsim-run.lock, held while the returned descriptor stays open."""
+    fd = os.open(os.path.join(run_dir, '.vascsim-run.lock'), os.O_RDWR | os.O_CREAT, 0o644)
+    fcntl.fcntl(fd, fcntl.F_OFD_SETLK, struct.pack('hhqqi4x', fcntl.F_WRLCK, os.SEEK_SET, 0, 0, 0))
+    return fd
+
+
 def check_live(driver, exe, run, shots, workdir):
     """A log still being written: the page shows "live", follows the end, then the summary."""
     src = os.path.join(run, 'frames.vlog')
@@ -966,6 +975,7 @@ def check_live(driver, exe, run, shots, workdir):
     first = max(2, frames // 4)
     with open(log, 'wb') as f:
         f.write(whole[:data + first * record])
+    claim = hold_run_claim(live_dir)
     server = Server(exe, [live_dir])
     writer = None
     stop = threading.Event()
@@ -997,6 +1007,8 @@ def check_live(driver, exe, run, shots, workdir):
                   'the cursor to reach the new end of the log')
         R.check(True, 'live: the cursor ends at the last appended frame')
         shutil.copy(os.path.join(run, 'summary.json'), os.path.join(live_dir, 'summary.json'))
+        os.close(claim)  # the run ends: its summary written, its claim let go
+        claim = None
         page.wait(lambda d: not d.find_element(By.ID, 'live-badge').is_displayed(), 'the live badge to go')
         R.check(True, 'live: the badge goes when summary.json appears')
         page.wait(lambda d: 'goal' in d.find_element(By.ID, 'summary').text, 'the summary to be shown')
@@ -1022,6 +1034,8 @@ def check_live(driver, exe, run, shots, workdir):
         stop.set()
         if writer:
             writer.join(timeout=10)
+        if claim is not None:
+            os.close(claim)
         server.stop('live', driver)
 
 # ---------------------------------------------------------------------------- main

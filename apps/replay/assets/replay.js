@@ -1139,7 +1139,7 @@
     const cols = runs().filter((r) => S.info[r]);
     const sums = cols.map((r) => S.info[r].summary);
     if (sums.every((s) => !s)) {
-      $('summary').innerHTML = `<span class="dim">${anyGrowing() ? 'run in progress: the summary appears when it ends' : 'no summary.json for this run'}</span>`;
+      $('summary').innerHTML = `<span class="dim">${anyGrowing() ? 'run in progress: the summary appears when it ends' : 'no summary.json, and no run is writing it: the run was killed before its end, or its directory was copied without it'}</span>`;
       return;
     }
     const nav = (s) => (s && s.navigation) || {};
