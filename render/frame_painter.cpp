@@ -443,15 +443,24 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     field({"Magnetic force", "Magnetic", "Force"},
           f.actuation.empty() ? std::string("n/a") : format_value(f.actuation_total().norm(), scales_.unit, 2));
     field({"Max contact", "Contact"}, f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
+    // Literals: hud_fields() keeps the label shown.
     if (const auto& end = ended_early_.run) {
       std::snprintf(buf, sizeof buf, "at %.3f s", end->at);
-      if (end->stopped) field({"Run stopped", "Stopped"}, buf, kFailure, kFailure);
-      else field({"Run failed", "Failed"}, buf, kFailure, kFailure);
+      switch (end->how) {
+        case EarlyEnd::How::kFailed: field({"Run failed", "Failed"}, buf, kFailure, kFailure); break;
+        case EarlyEnd::How::kStopped: field({"Run stopped", "Stopped"}, buf, kFailure, kFailure); break;
+        case EarlyEnd::How::kKilled: field({"Run killed", "Killed"}, buf, kFailure, kFailure); break;
+      }
     }
     if (const auto& end = ended_early_.overlay) {
       std::snprintf(buf, sizeof buf, "at %.3f s", end->at);
-      if (end->stopped) field({"Compared run stopped", "Compared stopped", "B stopped"}, buf, kFailure, kFailure);
-      else field({"Compared run failed", "Compared failed", "B failed"}, buf, kFailure, kFailure);
+      switch (end->how) {
+        case EarlyEnd::How::kFailed: field({"Compared run failed", "Compared failed", "B failed"}, buf, kFailure, kFailure); break;
+        case EarlyEnd::How::kStopped:
+          field({"Compared run stopped", "Compared stopped", "B stopped"}, buf, kFailure, kFailure);
+          break;
+        case EarlyEnd::How::kKilled: field({"Compared run killed", "Compared killed", "B killed"}, buf, kFailure, kFailure); break;
+      }
     }
     record("hud", hud_top, y - row);
   }

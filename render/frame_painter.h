@@ -49,8 +49,8 @@ double typical_peak(std::vector<double> values);
 // sampled), not the rendered window, so a clip draws the same arrows as the full video.
 ForceScales choose_force_scales(const FrameSource& source, const View& view);
 
-// The runs in the picture that ended early, failed or stopped (their summary.json says so;
-// FrameSource::ended_early()), each with the time it had reached. The HUD says so in red on every
+// The runs in the picture that ended early: failed or stopped (their summary.json says so), or
+// killed before writing one (FrameSource::ended_early()), each with the time it had reached. The HUD says so in red on every
 // frame, so no picture of such a run passes for a finished one, nor a compared rod that stops
 // moving for one that stopped of its own accord.
 struct RunsEndedEarly {

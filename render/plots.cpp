@@ -257,12 +257,12 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   const DisplayUnit fu = force_unit(std::max(max_act, max_con));
   const std::string force_label = std::string("force (") + fu.name + ")";
   const double to_mm = 1e3;
-  // The plots of a run that failed or was stopped say so in their top margin, as its video's HUD does.
+  // The plots of a run that failed, was stopped or was killed say so in their top margin, as its
+  // video's HUD does.
   const auto finish = [&](const char* name) {
     if (const auto& end = source.ended_early()) {
       char note[96];
-      std::snprintf(note, sizeof note, "Run %s at %.3f s: the plots end with its last logged frame",
-                    end->stopped ? "stopped" : "failed", end->at);
+      std::snprintf(note, sizeof note, "Run %s at %.3f s: the plots end with its last logged frame", verb(end->how), end->at);
       c.text(note, {0.02f * static_cast<float>(width), 1.4f * static_cast<float>(font)}, font, kFailure);
     }
     save(c, (fs::path(dir) / name).string(), force, written);

@@ -197,8 +197,8 @@ TEST(CliRun, KilledRunLeavesAReadableLog) {
   EXPECT_TRUE(fs::exists(dir + "/out/.vascsim-run.lock"));
   const CommandResult csv = run_vascsim("export " + dir + "/out --csv " + dir + "/csv");
   EXPECT_EQ(csv.exit_code, 0) << csv.output;
-  EXPECT_NE(csv.output.find(dir + "/out has no summary.json: no run is writing it, so its run was killed before its end "
-                                  "(kill -9, a crash, the machine out of memory)"),
+  EXPECT_NE(csv.output.find(dir + "/out has no summary.json: its run was killed before its end (kill -9, a crash, the machine "
+                                  "out of memory: it left its claim on the directory, which no run holds)"),
             std::string::npos)
       << csv.output;
   fs::remove_all(dir);

@@ -88,7 +88,7 @@ TEST(OutputFile, WriteFileAtomicallyLeavesOnlyTheFinalName) {
 // the claim's file but no holder; asking takes nothing, so a run starting meanwhile is not refused.
 TEST(OutputFile, TheRunClaimSaysWhetherARunIsWritingWithoutTakingIt) {
   const std::string dir = vascsim::test::fresh_temp_dir("run_claim_holder");
-  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kNone) << "never claimed";
+  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kNoClaim) << "never claimed";
   {
     RunDirectoryClaim claim(dir);
     EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kRun);
@@ -96,7 +96,7 @@ TEST(OutputFile, TheRunClaimSaysWhetherARunIsWritingWithoutTakingIt) {
     EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kRun) << "the refused claim let go of the first";
   }
   EXPECT_FALSE(fs::exists(fs::path(dir) / RunDirectoryClaim::kFileName));
-  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kNone);
+  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kNoClaim);
 
   // Another process claims the directory and tells us so; we ask while it holds the claim, then
   // it ends without cleaning up, as kill -9 leaves it.
@@ -121,7 +121,7 @@ TEST(OutputFile, TheRunClaimSaysWhetherARunIsWritingWithoutTakingIt) {
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   EXPECT_TRUE(fs::exists(fs::path(dir) / RunDirectoryClaim::kFileName)) << "the killed run's claim file stays";
-  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kNone);
+  EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kAbandoned);
   RunDirectoryClaim next(dir);  // and the next run takes the directory over
   EXPECT_EQ(RunDirectoryClaim::holder(dir), RunDirectoryClaim::Holder::kRun);
   for (int fd : {ready[0], ready[1], done[0], done[1]}) ::close(fd);

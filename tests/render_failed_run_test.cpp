@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "render/frame_source.h"
 #include "render/plots.h"
 #include "render/view_frame.h"
+#include "sim/io/output_file.h"
 #include "sim/io/png_file.h"
 #include "render_test_util.h"
 
@@ -54,15 +56,23 @@ TEST(RenderFailedRun, TheTimeTheRunReachedComesFromItsSummary) {
   SyntheticLogSpec spec;
   const std::string run = testing::make_run(dir, spec);
   EXPECT_FALSE(FrameSource(run).ended_early()) << "a run without a summary is not known to have failed";
+  {  // ... unless it left its claim on the directory with no run holding it: killed (kill -9, a crash)
+    RunDirectoryClaim claim(run);
+    EXPECT_FALSE(FrameSource(run).ended_early()) << "a run still writing";
+  }
+  testing::write_bytes(run + "/" + RunDirectoryClaim::kFileName, "");
+  ASSERT_TRUE(FrameSource(run).ended_early());
+  EXPECT_EQ(FrameSource(run).ended_early()->how, EarlyEnd::How::kKilled);
+  EXPECT_EQ(FrameSource(run).ended_early()->at, spec.duration) << "a killed run reached its last logged frame";
   write_summary(run, spec.frames, true, "1.0");
   EXPECT_FALSE(FrameSource(run).ended_early());
   write_summary(run, spec.frames, false, "1.0375");
   ASSERT_TRUE(FrameSource(run).ended_early());
   EXPECT_EQ(FrameSource(run).ended_early()->at, 1.0375);
-  EXPECT_FALSE(FrameSource(run).ended_early()->stopped);
+  EXPECT_EQ(FrameSource(run).ended_early()->how, EarlyEnd::How::kFailed);
   write_summary(run, spec.frames, false, "1.0375", "SIGINT (Ctrl-C)");
   ASSERT_TRUE(FrameSource(run).ended_early());
-  EXPECT_TRUE(FrameSource(run).ended_early()->stopped);
+  EXPECT_EQ(FrameSource(run).ended_early()->how, EarlyEnd::How::kStopped);
   // Without a time, or with one no run reaches (hand-edited), after its last logged frame.
   for (const std::string& reached : {std::string(""), std::string("-1"), std::string("\"soon\"")}) {
     write_summary(run, spec.frames, false, reached);
@@ -88,6 +98,12 @@ TEST(RenderFailedRun, TheHudSaysTheRunFailedAndNothingElseChanges) {
   const testing::PaintedFrame stopped = testing::paint_last_frame(run, w, h);
   ASSERT_EQ(stopped.hud.size(), 5u);
   EXPECT_STREQ(stopped.hud.back().label, "Run stopped");
+  // Killed with kill -9: no summary, and the run's claim on the directory left with no holder.
+  std::filesystem::remove(run + "/summary.json");
+  testing::write_bytes(run + "/" + RunDirectoryClaim::kFileName, "");
+  const testing::PaintedFrame killed = testing::paint_last_frame(run, w, h);
+  ASSERT_EQ(killed.hud.size(), 5u);
+  EXPECT_STREQ(killed.hud.back().label, "Run killed");
   ASSERT_FALSE(failed.items.empty());
   ASSERT_STREQ(failed.items.front().what, "hud");
   ASSERT_STREQ(finished.items.front().what, "hud");
@@ -145,7 +161,7 @@ TEST(RenderFailedRun, AThumbnailOfTwoRunsThatEndedEarlyHoldsBothRows) {
     view.width = w;
     view.height = h;
     FramePainter painter(run_a.metadata(), view, choose_force_scales(run_a, view), state,
-                         {EarlyEnd{0.5, false}, EarlyEnd{0.75, true}});
+                         {EarlyEnd{0.5, EarlyEnd::How::kFailed}, EarlyEnd{0.75, EarlyEnd::How::kStopped}});
     Canvas canvas(w, h);
     painter.paint(canvas, state, {}, &other);
     const std::string size = std::to_string(w) + " x " + std::to_string(h);
@@ -202,12 +218,13 @@ TEST(RenderFailedRun, AComparedRunThatFailedIsSaidToHaveFailed) {
   FrameState state, other;
   run_a.frame(0, state);
   FrameSource(b).at_time(0.5, other);
-  for (const bool stopped : {false, true}) {
-    FramePainter painter(run_a.metadata(), view, choose_force_scales(run_a, view), state,
-                         {std::nullopt, EarlyEnd{0.75, stopped}});
+  for (const auto& [how, label] : {std::pair{EarlyEnd::How::kFailed, "Compared run failed"},
+                                   {EarlyEnd::How::kStopped, "Compared run stopped"},
+                                   {EarlyEnd::How::kKilled, "Compared run killed"}}) {
+    FramePainter painter(run_a.metadata(), view, choose_force_scales(run_a, view), state, {std::nullopt, EarlyEnd{0.75, how}});
     painter.paint(canvas, state, {}, &other);
     ASSERT_EQ(painter.hud_fields().size(), 5u);
-    EXPECT_STREQ(painter.hud_fields().back().label, stopped ? "Compared run stopped" : "Compared run failed");
+    EXPECT_STREQ(painter.hud_fields().back().label, label);
   }
 }
 

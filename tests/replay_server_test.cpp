@@ -270,6 +270,12 @@ TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
   claim.reset();
   vascsim::test::write_text(run + "/" + RunDirectoryClaim::kFileName, "");
   EXPECT_EQ(get_json(s, "/api/run")["growing"], false);
+  // Its pictures say "Run killed" from then on, as a still that `vascsim render` makes of it.
+  const auto killed = s.get("/api/frame.png?t=10&width=320&height=240");
+  ASSERT_EQ(killed->status, 200);
+  const std::string still = dir / "killed.png";
+  ASSERT_EQ(vascsim::test::run_vascsim("render " + run + " --still 10 --width 320 --height 240 --png " + still).exit_code, 0);
+  EXPECT_TRUE(killed->body == vascsim::test::read_text(still)) << "the replay's frame of a run killed while served differs from a still of it";
   fs::remove(run + "/" + RunDirectoryClaim::kFileName);
   EXPECT_EQ(get_json(s, "/api/run")["growing"], false) << "no claim: no run writes there";
 

@@ -67,15 +67,19 @@ void ReplayRun::refresh() {
       // No summary yet: a run still writing if it holds its claim on the directory; a killed one
       // leaves no summary either. Where the claim cannot be asked about, a run still writing is
       // one whose log has changed lately.
+      const bool was_growing = growing_;
       switch (RunDirectoryClaim::holder(run_dir_)) {
         case RunDirectoryClaim::Holder::kRun: growing_ = true; break;
-        case RunDirectoryClaim::Holder::kNone: growing_ = false; break;
+        case RunDirectoryClaim::Holder::kNoClaim:
+        case RunDirectoryClaim::Holder::kAbandoned: growing_ = false; break;
         case RunDirectoryClaim::Holder::kUnknown: {
           std::error_code ec;
           const auto written = fs::last_write_time(source_->log_path(), ec);
           growing_ = !ec && fs::file_time_type::clock::now() - written < std::chrono::seconds(kStaleLogSeconds);
         }
       }
+      // A run killed while served: its pictures say "Run killed" from now on.
+      if (was_growing && !growing_) source_->recheck_run();
       return;
     }
     summary_ = std::move(*summary);

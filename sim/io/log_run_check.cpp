@@ -24,25 +24,39 @@ std::string early_end_warning(const json& summary, const std::string& summary_pa
 }
 
 // For a run directory without summary.json (written last, when a run ends, whether it reached
-// its end, failed or was stopped): whether a run is still writing it or was killed, from the
-// run's claim on the directory. Empty for a finished run and for a log copied out of its run.
-std::string incomplete_run_warning(const std::string& run_path) {
-  const std::string dir = run_dir_of(run_path);
-  std::error_code ec;
-  if (dir.empty() || std::filesystem::exists(std::filesystem::path(dir) / "summary.json", ec)) return "";
+// its end, failed or was stopped): a warning whether a run is still writing it or was killed,
+// from the run's claim on the directory, and a killed run's early end.
+void check_run_without_summary(const std::string& dir, LogRunCheck& check) {
   const std::string lead = "warning: " + dir + " has no summary.json";
   switch (RunDirectoryClaim::holder(dir)) {
     case RunDirectoryClaim::Holder::kRun:
-      return lead + " yet: a run is still writing it, so its log ends with the frames written so far";
-    case RunDirectoryClaim::Holder::kNone:
-      return lead + ": no run is writing it, so its run was killed before its end (kill -9, a crash, the machine out of memory) "
-                    "or the directory was copied without it; its log may end early";
-    case RunDirectoryClaim::Holder::kUnknown: break;
+      check.warnings.push_back(lead + " yet: a run is still writing it, so its log ends with the frames written so far");
+      return;
+    case RunDirectoryClaim::Holder::kAbandoned:
+      check.warnings.push_back(lead + ": its run was killed before its end (kill -9, a crash, the machine out of memory: it "
+                                      "left its claim on the directory, which no run holds); its log ends with the last frame it wrote");
+      check.ended_early = EarlyEnd{std::numeric_limits<double>::quiet_NaN(), EarlyEnd::How::kKilled};
+      return;
+    case RunDirectoryClaim::Holder::kNoClaim:
+      check.warnings.push_back(lead + ": no run is writing it (the directory was copied without it, or its run was killed), "
+                                      "so its log may end early");
+      return;
+    case RunDirectoryClaim::Holder::kUnknown:
+      check.warnings.push_back(lead + ": the run was killed (kill -9, a crash) or is still being written, so its log may end early");
+      return;
   }
-  return lead + ": the run was killed (kill -9, a crash) or is still being written, so its log may end early";
 }
 
 }  // namespace
+
+const char* verb(EarlyEnd::How how) {
+  switch (how) {
+    case EarlyEnd::How::kFailed: return "failed";
+    case EarlyEnd::How::kStopped: return "stopped";
+    case EarlyEnd::How::kKilled: return "killed";
+  }
+  return "failed";
+}
 
 LogRunCheck check_log_against_run(const std::string& run_path, std::size_t log_frames,
                                   const std::string& log_scene_hash) {
@@ -51,10 +65,14 @@ LogRunCheck check_log_against_run(const std::string& run_path, std::size_t log_f
   const auto warn = [&](const std::string& warning) {
     if (!warning.empty()) check.warnings.push_back(warning);
   };
-  warn(incomplete_run_warning(run_path));
   const std::string run_dir = run_dir_of(run_path);
   if (run_dir.empty()) return check;
   const fs::path log_path = fs::path(run_dir) / "frames.vlog", summary_path = fs::path(run_dir) / "summary.json";
+  std::error_code ec;
+  if (!fs::exists(summary_path, ec)) {
+    check_run_without_summary(run_dir, check);
+    return check;
+  }
   const std::string not_checked = ", so " + log_path.string() + " was not checked against it (its own checks still apply)";
   std::optional<json> summary;
   try {
@@ -87,10 +105,11 @@ LogRunCheck check_log_against_run(const std::string& run_path, std::size_t log_f
   if (ok != summary->end() && ok->is_boolean() && !ok->get<bool>()) {
     EarlyEnd end;
     const auto who = summary->find("stopped_by");
-    end.stopped = who != summary->end() && who->is_string() && !who->get<std::string>().empty();
+    const bool stopped = who != summary->end() && who->is_string() && !who->get<std::string>().empty();
+    end.how = stopped ? EarlyEnd::How::kStopped : EarlyEnd::How::kFailed;
     const auto reached = summary->find("simulated_time");
     if (reached != summary->end() && reached->is_number() && reached->get<double>() >= 0.0) end.at = reached->get<double>();
-    warn(early_end_warning(*summary, summary_path.string(), end.stopped));
+    warn(early_end_warning(*summary, summary_path.string(), stopped));
     check.ended_early = end;
   }
   return check;

@@ -11,15 +11,21 @@
 
 namespace vascsim {
 
-// A run that ended before its duration, as its summary says (/ok false).
+// A run that ended before its duration: as its summary says (/ok false), or killed before it
+// could write one.
 struct EarlyEnd {
-  // s, the time it had reached (/simulated_time); NaN where the summary gives none that is finite
-  // and >= 0 (a hand-edited summary).
+  enum class How {
+    kFailed,   // the simulation failed (/failure says how)
+    kStopped,  // a signal asked it to stop (Ctrl-C, kill, a scheduler's time limit: /stopped_by)
+    kKilled,   // killed without a summary (kill -9, a crash): its claim on the directory was left
+  };
+  // s, the time it had reached (/simulated_time); NaN where no summary gives one that is finite
+  // and >= 0 (a killed run's, a hand-edited summary's).
   double at = std::numeric_limits<double>::quiet_NaN();
-  // Stopped by a signal (Ctrl-C, kill, a scheduler's time limit: /stopped_by names it) rather than
-  // failed by the simulation.
-  bool stopped = false;
+  How how = How::kFailed;
 };
+// "failed", "stopped" or "killed", as pictures and warnings say it.
+const char* verb(EarlyEnd::How how);
 
 // What check_log_against_run found: the warnings, each a line, and whether the run ended early.
 struct LogRunCheck {
@@ -37,8 +43,8 @@ struct LogRunCheck {
 // or left by a run of another scene with as many frames). Returns warnings, each a line: the run
 // directory has no summary (the run is still writing, or was killed, so its log may end early); the
 // summary cannot be read or has no frame count (damaged, hand-written, another version's), so the
-// log was not checked against it; the run failed or was stopped (what is made from its log ends
-// with the last frame before that). None for a log copied out of its run.
+// log was not checked against it; the run failed, was stopped or was killed (what is made from
+// its log ends with the last frame before that). None for a log copied out of its run.
 [[nodiscard]] LogRunCheck check_log_against_run(const std::string& run_path, std::size_t log_frames,
                                                const std::string& log_scene_hash);
 

@@ -97,12 +97,12 @@ RunDirectoryClaim::~RunDirectoryClaim() {
 RunDirectoryClaim::Holder RunDirectoryClaim::holder(const std::string& dir) {
   const std::string path = (fs::path(dir) / kFileName).string();
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
-  if (fd < 0) return errno == ENOENT ? Holder::kNone : Holder::kUnknown;  // no claim: no run there
+  if (fd < 0) return errno == ENOENT ? Holder::kNoClaim : Holder::kUnknown;
   struct flock probe = whole_file_lock();
   const int result = ::fcntl(fd, F_OFD_GETLK, &probe);
   ::close(fd);
   if (result != 0) return Holder::kUnknown;
-  return probe.l_type == F_UNLCK ? Holder::kNone : Holder::kRun;
+  return probe.l_type == F_UNLCK ? Holder::kAbandoned : Holder::kRun;
 }
 
 void check_replaceable_output(const std::string& path, bool overwrite, const std::vector<std::string>& inputs,

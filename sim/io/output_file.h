@@ -88,11 +88,14 @@ class RunDirectoryClaim {
   // The claim's file name, which a run directory may hold beside a run's outputs.
   static constexpr const char* kFileName = ".vascsim-run.lock";
 
-  // Whether a run holds the claim on `dir` now, that is whether a run is writing there. A run
-  // directory without summary.json whose claim is free holds a run that was killed (kill -9, a
-  // crash, the machine out of memory), not one still being written. kUnknown where the file
-  // system cannot say (one without locks); never throws.
-  enum class Holder { kRun, kNone, kUnknown };
+  // Whether a run holds the claim on `dir` now, that is whether a run is writing there:
+  //   kRun        a run holds it;
+  //   kNoClaim    no claim file: no run writes there (none did, or the last one ended);
+  //   kAbandoned  the claim file with no run holding it: the run that made it was killed (kill -9,
+  //               a crash, the machine out of memory) and did not end; it has no summary.json;
+  //   kUnknown    the file system cannot say (one without locks, a file not ours to read).
+  // Never throws.
+  enum class Holder { kRun, kNoClaim, kAbandoned, kUnknown };
   static Holder holder(const std::string& dir);
 
  private:
