@@ -50,9 +50,9 @@ double typical_peak(std::vector<double> values);
 ForceScales choose_force_scales(const FrameSource& source, const View& view);
 
 // The runs in the picture that ended early: failed or stopped (their summary.json says so), or
-// killed before writing one (FrameSource::ended_early()), each with the time it had reached. The HUD says so in red on every
-// frame, so no picture of such a run passes for a finished one, nor a compared rod that stops
-// moving for one that stopped of its own accord.
+// killed before writing one (FrameSource::ended_early()), each with the time it had reached. The
+// HUD says so in red on every frame, so no picture of such a run passes for a finished one, nor a
+// compared rod that stops moving for one that stopped of its own accord.
 struct RunsEndedEarly {
   std::optional<EarlyEnd> run;      // the run whose map is painted
   std::optional<EarlyEnd> overlay;  // the compared run drawn over it (given only with one)
