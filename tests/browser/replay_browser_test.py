@@ -857,17 +857,25 @@ def log_layout(path):
     return (at + 7) // 8 * 8, 8 * doubles
 
 
-def check_stopped_run(driver, exe, shots, workdir):
-    """A run stopped by Ctrl-C reads as stopped, not failed: the summary's result, the note under
-    it (which goes to the last frame) and the timeline's mark say so."""
+def start_long_run(exe, workdir, name):
+    """`vascsim run` of a scene that outlasts the test (fixed 10 us steps on a free rod, a frame
+    every 10 ms: tests/cli_test_support.h's kLongRunScene) into WORKDIR/NAME, once its log exists."""
     scene = os.path.join(workdir, 'long.json')
     with open(scene, 'w') as f:
-        json.dump({'maze': None, 'rod': {'nodes': 40}, 'run': {'duration': 1000, 'output_interval': 0.01}}, f)
-    run = os.path.join(workdir, 'stopped')
+        json.dump({'maze': None, 'rod': {'nodes': 40}, 'solver': {'dt': 1e-5},
+                   'run': {'duration': 1000, 'output_interval': 0.01}}, f)
+    run = os.path.join(workdir, name)
     proc = subprocess.Popen([exe, 'run', scene, '--out', run, '--quiet'], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     deadline = time.time() + 30
     while time.time() < deadline and not os.path.exists(os.path.join(run, 'frames.vlog')):
         time.sleep(0.05)
+    return run, proc
+
+
+def check_stopped_run(driver, exe, shots, workdir):
+    """A run stopped by Ctrl-C reads as stopped, not failed: the summary's result, the note under
+    it (which goes to the last frame) and the timeline's mark say so."""
+    run, proc = start_long_run(exe, workdir, 'stopped')
     time.sleep(0.3)
     proc.send_signal(signal.SIGINT)
     _, err = proc.communicate(timeout=60)
@@ -890,6 +898,52 @@ def check_stopped_run(driver, exe, shots, workdir):
         R.check(not page.severe, 'no JS errors in the browser log (stopped run)', '; '.join(page.severe[:5]))
     finally:
         server.stop('stopped run', driver)
+
+
+def check_killed_run(driver, exe, shots, workdir):
+    """A run killed with kill -9 while watched live: the live badge goes, the summary panel says
+    it was killed, and the map at the cursor is drawn again with the HUD's "Run killed" row,
+    though the cursor did not move."""
+    run, proc = start_long_run(exe, workdir, 'killed')
+    server = Server(exe, [run])
+    try:
+        page = Page(driver, Api(server.url))
+        page.open(page.api.page)
+        page.wait(lambda d: d.find_element(By.ID, 'live-badge').is_displayed(), 'the live badge')
+        page.keys(Keys.END)
+        # Frozen first, so that the page has every frame the run wrote before the kill: then the
+        # kill changes nothing but how the run ended (new frames would move the cursor anyway).
+        proc.send_signal(signal.SIGSTOP)
+        time.sleep(0.2)
+        last = page.api.get('/api/run')['last_time']
+        page.wait(lambda d: page.state()['range'][1] == last and page.state()['t'] == last,
+                  "the cursor to follow to the frozen run's last frame")
+        page.ready()
+        before = page.frame_bytes()
+        proc.kill()
+        proc.wait(timeout=30)
+        page.wait(lambda d: not d.find_element(By.ID, 'live-badge').is_displayed(), 'the live badge to go')
+        R.check(True, 'killed run: the live badge goes when the run is killed')
+        text = page.wait(lambda d: 'killed' in d.find_element(By.ID, 'summary').text and d.find_element(By.ID, 'summary').text,
+                         'the summary panel to say the run was killed')
+        R.check(text.startswith('no summary.json, and no run is writing it'), 'killed run: the summary panel says so', repr(text))
+        page.ready()
+        shown = page.frame_bytes()
+        params = page.frame_params()
+        params.pop('token', None)
+        status, _, body = http(page.api.url('/api/frame.png', **params))
+        R.check(status == 200 and shown == body, 'killed run: the map shown is the server\'s frame of the killed run',
+                f'HTTP {status}, shown {len(shown or b"")} bytes, server {len(body)} bytes')
+        R.check(shown != before and abs(float(params['t']) - last) < 1e-6,
+                'killed run: the map at the same time was drawn again (its HUD now says "Run killed")')
+        page.shot(shots, 'killed.png')
+        page.collect_log()
+        R.check(not page.severe, 'no JS errors in the browser log (killed run)', '; '.join(page.severe[:5]))
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        server.stop('killed run', driver)
 
 
 # A feed into a dead end that squashes the rod: a run with warnings.
@@ -1094,6 +1148,7 @@ def main():
                 section('live follow', check_live, driver, args.vascsim, args.run, args.screenshots, workdir)
                 section('warnings', check_warnings, driver, args.vascsim, args.screenshots, workdir)
                 section('stopped run', check_stopped_run, driver, args.vascsim, args.screenshots, workdir)
+                section('killed run', check_killed_run, driver, args.vascsim, args.screenshots, workdir)
             if args.url_b or (args.vascsim and args.run_b and not args.url):
                 if args.url_b:
                     url_b = args.url_b

@@ -193,6 +193,13 @@
       }
       this.request(url, frameParams(this.run));
     }
+    // Asks for the wanted frame again, though it is the one shown: what the server draws for it
+    // changed (the run ended, and the HUD says how).
+    refetch() {
+      this.shownUrl = null;
+      this.failedUrl = null;
+      this.update();
+    }
     async request(url, params) {
       const seq = ++this.seq;
       this.inFlight = { url, seq };
@@ -1237,6 +1244,7 @@
     const atEnd = S.t >= S.t1 - 1e-9;
     const oldT1 = S.t1;
     const hadSummary = runs().map((r) => !!S.info[r].summary);
+    const wasGrowing = runs().map((r) => !!S.info[r].growing);
     try {
       for (const r of runs()) if (S.info[r].growing) S.info[r] = await getJSON('/api/run', { run: r });
     } catch (e) { showError(e); scheduleLive(); return; }
@@ -1250,10 +1258,20 @@
       loadEvents();
       viewChanged({ noHash: false });
     }
+    const ended = runs().filter((r, i) => wasGrowing[i] && !S.info[r].growing);
     if (runs().some((r, i) => !!S.info[r].summary !== hadSummary[i])) {
       renderSummary();
       loadEvents();
       showStatus('the run has ended: summary loaded');
+    } else if (ended.length) {
+      renderSummary();
+      showStatus('the run has ended without a summary: it was killed');
+    }
+    if (ended.length) {
+      // The frame at the cursor is the same request as before, but the map's HUD now says how
+      // the run ended ("Run failed", "Run killed"): ask for it again.
+      for (const slot of Object.values(slots)) if (slot) slot.refetch();
+      viewChanged({ noHash: true });
     }
     scheduleLive();
   }
