@@ -9,8 +9,10 @@ reopened to see its new frames; a torn last record is ignored, as the C++ reader
     print(log.metadata["title"], log.frame_count, [c.name for c in log.channels])
     tip = log.channel("position")[:, -1, :]                   # (frames, 2) in m
     error = log.channel("tip/error")                          # (frames,) in m
+    print(vascsim_log.run_state("out/maze_default"))         # "finished", "writing", "killed", ...
 """
 
+import fcntl
 import json
 import os
 import struct
@@ -142,3 +144,65 @@ def open_log(path):
     if os.path.isdir(path):
         path = os.path.join(path, "frames.vlog")
     return FrameLog(path)
+
+
+# The claim `vascsim run` holds on its directory while it writes (sim/io/output_file.h): an open
+# file description lock on this hidden file, left behind unheld by a run killed with kill -9.
+CLAIM_FILE = ".vascsim-run.lock"
+# struct flock on Linux (x86-64, arm64): l_type, l_whence, l_start, l_len, l_pid, padding.
+_FLOCK = "hhqqi4x"
+
+
+def _claim_holder(run_dir):
+    """"run" (a run holds the claim), "none" (no claim file), "abandoned" (no one holds it) or
+    "unknown" (the lock cannot be asked about), asking without taking it, as the C++ readers do."""
+    try:
+        fd = os.open(os.path.join(run_dir, CLAIM_FILE), os.O_RDONLY | os.O_NOFOLLOW)
+    except FileNotFoundError:
+        return "none"
+    except OSError:
+        return "unknown"
+    try:
+        probe = struct.pack(_FLOCK, fcntl.F_WRLCK, os.SEEK_SET, 0, 0, 0)
+        l_type = struct.unpack(_FLOCK, fcntl.fcntl(fd, fcntl.F_OFD_GETLK, probe))[0]
+    except (OSError, AttributeError):  # no OFD locks here (not Linux, Python before 3.9)
+        return "unknown"
+    finally:
+        os.close(fd)
+    return "abandoned" if l_type == fcntl.F_UNLCK else "run"
+
+
+def run_state(path):
+    """How the run of a run directory (or of its frames.vlog) stands, as `vascsim render`, `export`
+    and `replay` tell it (docs/frame-log.md, "Finished or not"):
+      "finished"  summary.json says it reached its end (/ok true);
+      "failed"    summary.json says the simulation failed (/ok false; /failure says how);
+      "stopped"   summary.json says a signal stopped it (/stopped_by: Ctrl-C, kill, a time limit);
+      "writing"   no summary yet: a `vascsim run` is still writing it, so its log will grow;
+      "killed"    no summary, and the run left its claim with no run holding it (kill -9, a crash,
+                  out of memory): its log ends with the last frame it wrote;
+      "unknown"   no summary and no claim (a directory copied without it), a summary that cannot
+                  be read, or a file system that cannot say.
+    A log named directly under another name than frames.vlog has no run: "unknown"."""
+    if not os.path.exists(path):
+        raise FileNotFoundError("%s: no such run directory or frame log" % path)
+    if os.path.isdir(path):
+        run_dir = path
+    elif os.path.basename(path) == "frames.vlog":
+        run_dir = os.path.dirname(path) or "."
+    else:
+        return "unknown"
+    summary_path = os.path.join(run_dir, "summary.json")
+    if os.path.exists(summary_path):
+        try:
+            with open(summary_path, "rb") as f:
+                summary = json.loads(f.read().decode("utf-8"))
+        except (OSError, ValueError):
+            return "unknown"
+        if not isinstance(summary, dict) or not isinstance(summary.get("ok"), bool):
+            return "unknown"
+        if summary["ok"]:
+            return "finished"
+        stopped_by = summary.get("stopped_by")
+        return "stopped" if isinstance(stopped_by, str) and stopped_by else "failed"
+    return {"run": "writing", "abandoned": "killed"}.get(_claim_holder(run_dir), "unknown")

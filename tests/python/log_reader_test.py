@@ -2,13 +2,18 @@
 channel of every frame, as `vascsim export --csv` (the C++ FrameLogReader) writes them with 17
 significant digits, must equal the memory-mapped arrays exactly. Also: a run directory or file
 opens, a torn last record is ignored, another format version, a wrong channel count and frame
-times that are not finite or go back are refused.
+times that are not finite or go back are refused; and run_state() says how a run stands as the C++
+readers' warnings do (finished, failed, stopped, still writing, killed).
 Usage: log_reader_test.py VASCSIM_EXE SOURCE_DIR WORK_DIR"""
 import csv
+import fcntl
+import json
 import os
 import shutil
+import struct
 import subprocess
 import sys
+import time
 
 import numpy as np
 
@@ -99,5 +104,63 @@ except ValueError as e:
         2 * log.node_count - 1, 2 * log.node_count) in str(e), e
 export = subprocess.run([exe, "export", bad_count, "--csv", csv_dir, "--force"], capture_output=True, text=True)
 assert export.returncode == 2 and "bad_count.vlog: channel 'position' holds" in export.stderr, export
+
+# How a run stands (run_state), each state beside the C++ readers' warning for the same directory;
+# a lock this test holds must read as a run writing to both, so both ask about the same lock.
+assert vascsim_log.run_state(run) == "finished"
+assert vascsim_log.run_state(os.path.join(run, "frames.vlog")) == "finished"
+assert vascsim_log.run_state(torn) == "unknown", "a log copied out of its run has no run"
+state = os.path.join(work, "state")
+shutil.copytree(run, state)
+summary_path = os.path.join(state, "summary.json")
+with open(summary_path) as f:
+    finished = json.load(f)
+
+
+def cxx_warning():
+    export = subprocess.run([exe, "export", state, "--csv", csv_dir, "--force"], capture_output=True, text=True)
+    assert export.returncode == 0, export
+    return export.stderr
+
+
+for changes, expected, warned in (({"ok": False, "failure": "Newton did not converge"}, "failed", "the run failed"),
+                                  ({"ok": False, "failure": "stopped by SIGTERM", "stopped_by": "SIGTERM"}, "stopped",
+                                   "the run was stopped before its end")):
+    with open(summary_path, "w") as f:
+        json.dump(dict(finished, **changes), f)
+    assert vascsim_log.run_state(state) == expected, (changes, vascsim_log.run_state(state))
+    assert warned in cxx_warning()
+os.remove(summary_path)
+assert vascsim_log.run_state(state) == "unknown"
+assert "no run is writing it (the directory was copied without it" in cxx_warning()
+claim = os.path.join(state, vascsim_log.CLAIM_FILE)
+open(claim, "w").close()
+assert vascsim_log.run_state(state) == "killed"
+assert "its run was killed before its end" in cxx_warning()
+fd = os.open(claim, os.O_RDWR)
+fcntl.fcntl(fd, fcntl.F_OFD_SETLK, struct.pack("hhqqi4x", fcntl.F_WRLCK, os.SEEK_SET, 0, 0, 0))
+assert vascsim_log.run_state(state) == "writing"
+assert "a run is still writing it" in cxx_warning()
+os.close(fd)
+# A real run: writing while it runs (fixed 10 us steps: it outlasts the test), killed by kill -9.
+long_scene = os.path.join(work, "long.json")
+with open(long_scene, "w") as f:
+    json.dump({"maze": None, "rod": {"nodes": 40}, "solver": {"dt": 1e-5}, "run": {"duration": 1000, "output_interval": 0.01}}, f)
+live = os.path.join(work, "live")
+proc = subprocess.Popen([exe, "run", long_scene, "--out", live, "--quiet"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+try:
+    deadline = time.time() + 30
+    while time.time() < deadline and not os.path.exists(os.path.join(live, "frames.vlog")):
+        time.sleep(0.02)
+    assert vascsim_log.run_state(live) == "writing", vascsim_log.run_state(live)
+finally:
+    proc.kill()
+    proc.wait()
+assert vascsim_log.run_state(live) == "killed", vascsim_log.run_state(live)
+try:
+    vascsim_log.run_state(os.path.join(work, "no_such_run"))
+    raise AssertionError("a path that does not exist has a state")
+except FileNotFoundError as e:
+    assert "no_such_run: no such run directory or frame log" in str(e), e
 
 print("python reader agrees with the C++ reader on %d channels x %d frames" % (len(log.channels), log.frame_count))
