@@ -265,11 +265,13 @@ TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
   EXPECT_DOUBLE_EQ(info["last_time"].get<double>(), 10.0);
   EXPECT_EQ(info["node_count"], 40);
   EXPECT_EQ(info["growing"], true) << "a run directory without summary.json whose run holds its claim is being written";
+  EXPECT_EQ(info["state"], "writing");
   // A run killed with kill -9 leaves its claim's file, which no process holds any more: the log
   // does not grow, however recently it was written.
   claim.reset();
   vascsim::test::write_text(run + "/" + RunDirectoryClaim::kFileName, "");
   EXPECT_EQ(get_json(s, "/api/run")["growing"], false);
+  EXPECT_EQ(get_json(s, "/api/run")["state"], "killed");
   // Its pictures say "Run killed" from then on, as a still that `vascsim render` makes of it.
   const auto killed = s.get("/api/frame.png?t=10&width=320&height=240");
   ASSERT_EQ(killed->status, 200);
@@ -278,6 +280,7 @@ TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
   EXPECT_TRUE(killed->body == vascsim::test::read_text(still)) << "the replay's frame of a run killed while served differs from a still of it";
   fs::remove(run + "/" + RunDirectoryClaim::kFileName);
   EXPECT_EQ(get_json(s, "/api/run")["growing"], false) << "no claim: no run writes there";
+  EXPECT_EQ(get_json(s, "/api/run")["state"], "killed") << "once killed, a run stays killed";
 
   render::FrameSource source(run);
   render::FrameState frame;
@@ -424,6 +427,7 @@ TEST(ReplayServer, LiveFollowSeesFramesAppendedAfterStart) {
   info = get_json(s, "/api/run");
   EXPECT_EQ(info["growing"], false);
   EXPECT_EQ(info["summary"]["ok"], true);
+  EXPECT_EQ(info["state"], "finished");
   const std::string png = dir / "live.png";
   ASSERT_EQ(vascsim::test::run_vascsim("render " + run + " --still 1.1 --width 64 --height 64 --png " + png).exit_code, 0);
   EXPECT_TRUE(live->body == vascsim::test::read_text(png)) << "a live frame differs from the still of the final log";
@@ -448,6 +452,7 @@ TEST(ReplayServer, ALiveRunThatFailsIsSaidToHaveFailedOnceItsSummaryAppears) {
   vascsim::test::write_text(run + "/summary.json", R"({"format": "vascsim-summary/1", "ok": false,
       "failure": "Newton did not converge", "frames": 12, "simulated_time": 1.13})");
   EXPECT_EQ(get_json(s, "/api/run")["summary"]["ok"], false);
+  EXPECT_EQ(get_json(s, "/api/run")["state"], "failed");
   const auto ended = s.get(frame);
   ASSERT_EQ(ended->status, 200);
   EXPECT_NE(ended->body, running->body) << "the HUD does not say the run failed";
@@ -465,6 +470,7 @@ TEST(ReplayServer, ARunStoppedBySignalIsMarkedStoppedOnTheTimeline) {
       "failure": "stopped by SIGTERM at t = 1.13 s, before the run's end (20 s)", "stopped_by": "SIGTERM",
       "frames": 12, "simulated_time": 1.13})json");
   LiveServer s({{run}});
+  EXPECT_EQ(get_json(s, "/api/run")["state"], "stopped");
   const json events = get_json(s, "/api/events");
   ASSERT_FALSE(events["events"].empty());
   EXPECT_EQ(events["events"].back()["kind"], "failure");

@@ -97,6 +97,13 @@ void ReplayRun::refresh() {
   }
 }
 
+std::string ReplayRun::state() const {
+  if (const auto& end = source_->ended_early()) return verb(end->how);
+  if (growing_) return "writing";
+  const auto ok = summary_.find("ok");
+  return ok != summary_.end() && ok->is_boolean() && ok->get<bool>() ? "finished" : "unknown";
+}
+
 json ReplayRun::info() const {
   const render::FrameSource& s = *source_;
   const FrameLogHeader& h = s.header();
@@ -119,6 +126,7 @@ json ReplayRun::info() const {
           {"last_time", s.last_time()},
           {"output_interval", m.output_interval},
           {"growing", growing_},
+          {"state", state()},
           {"generation", generation_},
           {"summary", summary_},
           {"bounds", {{"min", pair(m.bounds.min.x(), m.bounds.min.y())}, {"max", pair(m.bounds.max.x(), m.bounds.max.y())}}},

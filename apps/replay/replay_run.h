@@ -35,8 +35,12 @@ class ReplayRun {
 
   // Picks up frames appended since and a summary.json that appeared.
   void refresh();
-  // No summary.json yet and the log changed in the last 30 s: a `vascsim run` is still writing.
+  // No summary.json yet, and a `vascsim run` holds its claim on the directory: it is still writing.
   bool growing() const { return growing_; }
+  // How the run stands, as python/vascsim_log.py's run_state() says it: "finished", "failed",
+  // "stopped", "writing", "killed" or "unknown" (no summary and no claim, a summary that cannot be
+  // read, a log outside its run directory).
+  std::string state() const;
   const nlohmann::json& summary() const { return summary_; }
 
   // GET /api/run

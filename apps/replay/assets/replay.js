@@ -1146,7 +1146,11 @@
     const cols = runs().filter((r) => S.info[r]);
     const sums = cols.map((r) => S.info[r].summary);
     if (sums.every((s) => !s)) {
-      $('summary').innerHTML = `<span class="dim">${anyGrowing() ? 'run in progress: the summary appears when it ends' : 'no summary.json, and no run is writing it: the run was killed before its end, or its directory was copied without it'}</span>`;
+      const killed = cols.some((r) => S.info[r].state === 'killed');
+      const why = anyGrowing() ? 'run in progress: the summary appears when it ends'
+        : killed ? 'no summary.json: the run was killed before its end (kill -9, a crash, out of memory); the log ends with the last frame it wrote'
+          : 'no summary.json, and no run is writing it (the directory was copied without it?)';
+      $('summary').innerHTML = `<span class="dim">${why}</span>`;
       return;
     }
     const nav = (s) => (s && s.navigation) || {};
