@@ -12,7 +12,6 @@ reopened to see its new frames; a torn last record is ignored, as the C++ reader
     print(vascsim_log.run_state("out/maze_default"))         # "finished", "writing", "killed", ...
 """
 
-import fcntl
 import json
 import os
 import struct
@@ -157,7 +156,11 @@ def _claim_holder(run_dir):
     """"run" (a run holds the claim), "none" (no claim file), "abandoned" (no one holds it) or
     "unknown" (the lock cannot be asked about), asking without taking it, as the C++ readers do."""
     try:
-        fd = os.open(os.path.join(run_dir, CLAIM_FILE), os.O_RDONLY | os.O_NOFOLLOW)
+        import fcntl  # here, not above: the rest of this module also reads logs copied to Windows
+    except ImportError:
+        return "unknown"
+    try:
+        fd = os.open(os.path.join(run_dir, CLAIM_FILE), os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
     except FileNotFoundError:
         return "none"
     except OSError:
