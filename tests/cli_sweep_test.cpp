@@ -186,9 +186,10 @@ TEST(SweepCli, SigtermToTheWholeTaskStopsEachRunWithASummaryThatSaysSo) {
                         R"(", "axes": {"/run/duration": [1000, 1001], "/control/kp": [4]}})");
   const std::string out = dir + "/out", printed = dir + "/printed.txt";
   const pid_t task = start_vascsim({"sweep", sweep, "--out", out, "--jobs", "2", "--no-merge"}, {printed, true});
-  wait_for_files({out + "/runs/0000/frames.vlog", out + "/runs/0001/frames.vlog"}, 60);
+  const bool started = wait_for_files({out + "/runs/0000/frames.vlog", out + "/runs/0001/frames.vlog"}, 60);
   ::usleep(200000);
   ::kill(-task, SIGTERM);
+  EXPECT_TRUE(started) << "the runs never started";
   int status = 0;
   ASSERT_EQ(::waitpid(task, &status, 0), task);
   const std::string output = read_text(printed);

@@ -475,6 +475,16 @@ TEST(ReplayServer, ARunStoppedBySignalIsMarkedStoppedOnTheTimeline) {
   ASSERT_FALSE(events["events"].empty());
   EXPECT_EQ(events["events"].back()["kind"], "failure");
   EXPECT_EQ(events["events"].back()["label"], "run stopped by SIGTERM at t = 1.13 s, before the run's end (20 s)");
+
+  // An empty /stopped_by (hand-edited) names no one: a failure, as the log check and the sweep
+  // read it too (sim/io/run_summary_reader.h).
+  ScratchDir other("replay_stopped_by_empty");
+  const std::string failed = make_twelve_frame_run(other);
+  vascsim::test::write_text(failed + "/summary.json", R"json({"format": "vascsim-summary/1", "ok": false,
+      "failure": "Newton did not converge", "stopped_by": "", "frames": 12, "simulated_time": 1.13})json");
+  LiveServer f({{failed}});
+  EXPECT_EQ(get_json(f, "/api/events")["events"].back()["label"], "run failed: Newton did not converge");
+  EXPECT_EQ(get_json(f, "/api/run")["state"], "failed");
 }
 
 // A run that failed replays up to its last frame, with the failure marked on the timeline.

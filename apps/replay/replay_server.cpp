@@ -22,6 +22,7 @@
 #include "apps/replay/series.h"
 #include "render/png_writer.h"
 #include "sim/io/json_fields.h"
+#include "sim/io/run_summary_reader.h"
 #include "sim/io/run_warnings.h"
 #include "render/view_frame.h"
 #include "sim/scene/input_error.h"
@@ -402,7 +403,7 @@ struct ReplayServer::Impl {
     if (s.is_object() && s.contains("ok") && s["ok"] == false) {
       const std::string failure = s["failure"].is_string() ? s["failure"].get<std::string>() : "";
       // A run stopped by a signal is not a failure of the simulation; its /failure says who stopped it.
-      const bool stopped = s.contains("stopped_by") && s["stopped_by"].is_string();
+      const bool stopped = summary_says_stopped(s);
       list.push_back({{"t", run.source().last_time()},
                       {"kind", "failure"},
                       {"label", stopped ? "run " + failure : "run failed: " + failure}});

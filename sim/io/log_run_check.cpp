@@ -104,8 +104,7 @@ LogRunCheck check_log_against_run(const std::string& run_path, std::size_t log_f
   const auto ok = summary->find("ok");
   if (ok != summary->end() && ok->is_boolean() && !ok->get<bool>()) {
     EarlyEnd end;
-    const auto who = summary->find("stopped_by");
-    const bool stopped = who != summary->end() && who->is_string() && !who->get<std::string>().empty();
+    const bool stopped = summary_says_stopped(*summary);
     end.how = stopped ? EarlyEnd::How::kStopped : EarlyEnd::How::kFailed;
     const auto reached = summary->find("simulated_time");
     if (reached != summary->end() && reached->is_number() && reached->get<double>() >= 0.0) end.at = reached->get<double>();

@@ -25,4 +25,10 @@ std::optional<json> read_run_summary(const std::string& run_dir) {
   return io::parse_json_strictly(text, path.string());
 }
 
+bool summary_says_stopped(const nlohmann::json& summary) {
+  if (!summary.is_object()) return false;
+  const auto who = summary.find("stopped_by");
+  return who != summary.end() && who->is_string() && !who->get<std::string>().empty();
+}
+
 }  // namespace vascsim

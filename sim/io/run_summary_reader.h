@@ -15,4 +15,8 @@ namespace vascsim {
 // absent.)
 std::optional<nlohmann::json> read_run_summary(const std::string& run_dir);
 
+// Whether a summary says a signal stopped its run (/stopped_by a non-empty string) rather than
+// the simulation failing: the one test the log check, the sweep and the replay's timeline make.
+bool summary_says_stopped(const nlohmann::json& summary);
+
 }  // namespace vascsim

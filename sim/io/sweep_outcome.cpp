@@ -126,8 +126,7 @@ RunOutcome read_run_outcome(const std::string& run_dir) {
       read_summary(*summary, (dir / "summary.json").string(), out);
       // Stopped by a signal the sweep did not see (its own Ctrl-C, a scheduler's SIGTERM to the
       // whole job, the kernel's after the sweep was killed): not run to its end, so run again.
-      const json stopped_by = summary->value("stopped_by", json());
-      if (!out.has_status && stopped_by.is_string() && !stopped_by.get<std::string>().empty()) {
+      if (!out.has_status && summary_says_stopped(*summary)) {
         out.status = "missing";
         out.failure.clear();
         out.metrics.assign(kMetricCount, kNaN);
