@@ -398,6 +398,25 @@ std::string make_twelve_frame_run(const ScratchDir& dir) {
   return run;
 }
 
+// Where the claim cannot be asked about (its file is not one the lock can be asked through: here a
+// symlink, which the probe does not follow), a run without a summary is taken to be writing while
+// its log has changed in the last 30 s, and killed-or-copied ("unknown", no "Run killed") after.
+TEST(ReplayServer, WhereTheClaimCannotBeAskedAboutOnlyARecentLogIsGrowing) {
+  ScratchDir dir("replay_claim_unknown");
+  const std::string run = synthetic_run(dir, "run");
+  const std::string claim_file = run + "/" + RunDirectoryClaim::kFileName;
+  fs::create_symlink("elsewhere.lock", claim_file);
+  ASSERT_EQ(RunDirectoryClaim::holder(run), RunDirectoryClaim::Holder::kUnknown);
+  const std::string log = run + "/frames.vlog";
+  fs::last_write_time(log, fs::file_time_type::clock::now() - std::chrono::seconds(20));
+  LiveServer s({{run}});
+  EXPECT_EQ(get_json(s, "/api/run")["growing"], true) << "a log written 20 s ago may still grow";
+  EXPECT_EQ(get_json(s, "/api/run")["state"], "writing");
+  fs::last_write_time(log, fs::file_time_type::clock::now() - std::chrono::seconds(40));
+  EXPECT_EQ(get_json(s, "/api/run")["growing"], false) << "a log untouched for 40 s is no longer written";
+  EXPECT_EQ(get_json(s, "/api/run")["state"], "unknown") << "nothing says the run was killed";
+}
+
 // A log that a run is still writing: the server sees appended frames, then the summary.
 TEST(ReplayServer, LiveFollowSeesFramesAppendedAfterStart) {
   ScratchDir dir("replay_live");
