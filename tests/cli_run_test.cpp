@@ -1,6 +1,8 @@
 // `vascsim run` as a user drives it: outputs, refusal to overwrite, bad scenes, a diverging run
 // that keeps its frames and says why, and a killed run that leaves a readable log.
 #include <gtest/gtest.h>
+#include <poll.h>
+#include <sys/inotify.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -155,6 +157,37 @@ TEST(CliRun, ARunStoppedBySignalWritesASummaryThatSaysSoAndEndsByTheSignal) {
                               "); its log ends with the last frame before it stopped"),
               std::string::npos)
         << csv.output;
+  }
+  fs::remove_all(dir);
+}
+
+// A stop asked for the moment the run's directory shows its first file (a sweep's Ctrl-C, a script
+// that waits for the run to start) is handled like any other: the run ends with a summary that
+// says so. The handler was installed only after the log was opened, so a signal in between ended
+// the run by default, without a summary (seen once in a sweep test under load). inotify tells of
+// the claim's file within microseconds of its creation, sooner than that window closed.
+TEST(CliRun, AStopAskedForAsSoonAsTheRunsFirstFileAppearsIsHandled) {
+  const std::string dir = fresh_temp_dir("run_stopped_early");
+  write_text(dir + "/long.json", kLongRunScene);
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    const std::string out = dir + "/out" + std::to_string(attempt), printed = dir + "/printed.txt";
+    fs::create_directories(out);  // empty: a run may take it
+    const int watch = ::inotify_init1(IN_CLOEXEC);
+    ASSERT_GE(watch, 0);
+    ASSERT_GE(::inotify_add_watch(watch, out.c_str(), IN_CREATE), 0);
+    const pid_t run = start_vascsim({"run", dir + "/long.json", "--out", out, "--quiet"}, {printed});
+    alignas(inotify_event) char events[4096];
+    pollfd ready{watch, POLLIN, 0};
+    const bool created = ::poll(&ready, 1, 60000) == 1 && ::read(watch, events, sizeof events) > 0;
+    ::kill(run, SIGTERM);
+    ::close(watch);
+    int status = 0;
+    ASSERT_EQ(::waitpid(run, &status, 0), run);
+    ASSERT_TRUE(created) << "the run created nothing in its directory";
+    const std::string output = read_text(printed);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status << "\n" << output;
+    ASSERT_TRUE(fs::exists(out + "/summary.json")) << "attempt " << attempt << ": ended without its summary\n" << output;
+    EXPECT_EQ(nlohmann::json::parse(read_text(out + "/summary.json"))["stopped_by"], "SIGTERM");
   }
   fs::remove_all(dir);
 }

@@ -200,6 +200,12 @@ int run_run_command(int argc, char** argv) {
   const FrameLogHeader log_header = run_log_header(run);
   check_log_size(run, log_header, max_log_size(args));
 
+  // From before its first file until the summary is written: a stop asked for once anything of
+  // the run can be seen (a script that waits for its directory) still ends with a summary; the
+  // first step sees it. The claim's removal on a signal first, as StopOnSignal passes the signal
+  // on to the handlers it found.
+  RemovedOnSignal::install_handlers();
+  std::optional<StopOnSignal> stop(std::in_place);
   // Refuse to mix a new run into a directory holding someone's files.
   std::error_code ec;
   std::unique_ptr<RunDirectoryClaim> claim;
@@ -223,7 +229,6 @@ int run_run_command(int argc, char** argv) {
   FrameLogWriter writer(log_path, log_header);
   FrameLogSink sink(writer);
   Progress progress(!args.flag("quiet"), scene.run.duration);
-  std::optional<StopOnSignal> stop(std::in_place);  // until the summary is written
   const bool ok = run.run(sink, [&](double t) { progress.update(t); }, [&] { return stop->reason(); });
   progress.finish();
   writer.close();

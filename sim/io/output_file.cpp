@@ -278,6 +278,8 @@ void install_cleanup_handlers() {
 
 }  // namespace
 
+void RemovedOnSignal::install_handlers() { install_cleanup_handlers(); }
+
 RemovedOnSignal::RemovedOnSignal(const std::string& path) {
   if (path.size() >= sizeof g_guarded[0].path) return;
   install_cleanup_handlers();

@@ -33,6 +33,12 @@ class RemovedOnSignal {
   RemovedOnSignal(const RemovedOnSignal&) = delete;
   RemovedOnSignal& operator=(const RemovedOnSignal&) = delete;
 
+  // Installs the removing handlers now rather than with the first name (once; not over a
+  // signal handled or ignored already). A program that then handles these signals itself and
+  // passes them on to the handlers it found (`vascsim run`'s StopOnSignal) calls it first, so
+  // that names guarded later are still removed when it does.
+  static void install_handlers();
+
  private:
   int slot_ = -1;
 };
