@@ -237,7 +237,7 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
     for (const auto& w : meta_.walls)
       c.capsule(apply(m, w.a), apply(m, w.b), 0.5f * std::max(min_wall, static_cast<float>(w.thickness) * s), kWall);
 
-  if (on.has(Layer::kPath)) {
+  if (path_drawn()) {
     scratch_.clear();
     for (const auto& p : meta_.path) scratch_.push_back(apply(m, p));
     const float line = std::max(1.5f, h / 400.0f);
@@ -245,7 +245,7 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
   }
 
   const float marker = std::max(4.0f, h / 90.0f);
-  if (on.has(Layer::kStartGoal) && (!meta_.path.empty() || meta_.start != meta_.goal)) {
+  if (start_goal_drawn()) {
     c.disc(apply(m, meta_.start), marker, kStart);
     c.disc(apply(m, meta_.start), 0.4f * marker, hex(0xFFFFFF));
     c.ring(apply(m, meta_.goal), marker, 0.45f * marker, kGoal);
@@ -349,6 +349,23 @@ void FramePainter::paint_arrows(Canvas& c, const std::vector<double>& forces, do
   }
 }
 
+double FramePainter::legend_scale(Layer layer) const {
+  if (!view_.layers.has(layer)) return 0.0;
+  switch (layer) {
+    case Layer::kMagnetic: return scales_.actuation_px_per_newton;
+    case Layer::kContact:
+    case Layer::kFriction: return scales_.contact_px_per_newton;
+    case Layer::kDrag: return scales_.drag_px_per_newton;
+    default: return 0.0;
+  }
+}
+
+bool FramePainter::path_drawn() const { return view_.layers.has(Layer::kPath) && meta_.path.size() >= 2; }
+
+bool FramePainter::start_goal_drawn() const {
+  return view_.layers.has(Layer::kStartGoal) && (!meta_.path.empty() || meta_.start != meta_.goal);
+}
+
 float FramePainter::card_bottom() const {
   const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = 1.45f * fs;
   return 0.5f * pad + (4.3f + (card_title_line_ ? 1.3f : 0.0f) + static_cast<float>(ended_early_.count())) * row + pad;
@@ -378,8 +395,8 @@ void FramePainter::paint_band(Canvas& c) const {
       c.text(what, {x, y}, small, kInk);
     x += half;
   };
-  arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, actuation_arrow_width(H), "Magnetic");
-  arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, contact_arrow_width(H), "Contact");
+  arrow_entry(legend_scale(Layer::kMagnetic), scales_.actuation_reference, kActuation, actuation_arrow_width(H), "Magnetic");
+  arrow_entry(legend_scale(Layer::kContact), scales_.contact_reference, kContact, contact_arrow_width(H), "Contact");
   y += row;
   scale_bar(c, {x0 + 0.5f * pad, y + mid}, 0.3 * (x1 - x0), scale_, y, true, small);
 }
@@ -411,8 +428,8 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   panel_items_.clear();
   hud_fields_.clear();
   // A line of text at baseline `baseline` reaches from one font size above it to a third below.
-  const auto record = [&](const char* what, float first_baseline, float last_baseline) {
-    panel_items_.push_back({what, lx, rx, first_baseline - fs, last_baseline + 0.35f * fs});
+  const auto record = [&](const char* what, float first_baseline, float last_baseline, const std::string& label = {}) {
+    panel_items_.push_back({what, lx, rx, first_baseline - fs, last_baseline + 0.35f * fs, label});
   };
   if (hud) {
     const float hud_top = y;
@@ -480,13 +497,13 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   const float sym_end = lx + 2.2f * fs, text_x = lx + 2.8f * fs, mid = -0.35f * fs;
   auto entry = [&](const std::string& label) {
     c.text(label, {text_x, y}, small, kInk);
-    record("legend", y, y);
+    record("legend", y, y, label);
     y += row;
   };
   auto arrow_entry = [&](double px_per_newton, double reference, Rgba colour, float width, const char* what) {
     if (px_per_newton <= 0 || !fits(2)) return;
     c.text(what, {lx, y}, small, kInk);
-    record("legend", y, y + row);
+    record("legend", y, y + row, what);
     y += row;
     legend_arrow(c, {lx, y + mid}, y, rx - lx, 0.6f * fs, px_per_newton, reference, scales_.unit, colour, width, small);
     y += row;
@@ -494,14 +511,13 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   // A lambda so that the first entry that does not fit ends the list (those below need less room
   // only by accident, and a gap in the order reads as a missing symbol).
   const auto symbols = [&] {
-    arrow_entry(scales_.actuation_px_per_newton, scales_.actuation_reference, kActuation, actuation_arrow_width(H),
+    arrow_entry(legend_scale(Layer::kMagnetic), scales_.actuation_reference, kActuation, actuation_arrow_width(H),
                 "Magnetic force");
-    arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kContact, contact_arrow_width(H), "Contact force");
-    if (view_.layers.has(Layer::kFriction) && !f.friction.empty())
-      arrow_entry(scales_.contact_px_per_newton, scales_.contact_reference, kFriction, contact_arrow_width(H),
-                  "Friction force");
-    if (view_.layers.has(Layer::kDrag) && !f.drag.empty())
-      arrow_entry(scales_.drag_px_per_newton, scales_.drag_reference, kDrag, contact_arrow_width(H), "Drag force");
+    arrow_entry(legend_scale(Layer::kContact), scales_.contact_reference, kContact, contact_arrow_width(H), "Contact force");
+    if (!f.friction.empty())
+      arrow_entry(legend_scale(Layer::kFriction), scales_.contact_reference, kFriction, contact_arrow_width(H), "Friction force");
+    if (!f.drag.empty())
+      arrow_entry(legend_scale(Layer::kDrag), scales_.drag_reference, kDrag, contact_arrow_width(H), "Drag force");
     if (!fits(1)) return;
     const float r = std::max(0.5f * float(view_.min_rod_width_px), static_cast<float>(meta_.rod_outer_radius * scale_));
     c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kRodEdge);
@@ -514,13 +530,18 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
       c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kOverlayRod);
       entry("compared run's catheter");
     }
-    if (!fits(1)) return;
-    c.dashed_polyline({{lx, y + mid}, {sym_end, y + mid}}, std::max(1.5f, H / 400.0f), 6.0f, 4.0f, kPath);
-    entry("reference path");
-    if (!fits(1)) return;
-    c.capsule({lx, y + mid}, {sym_end, y + mid}, 0.5f * std::max(2.0f, H / 300.0f), kTrail);
-    entry("tip trail");
-    if (!fits(1)) return;
+    // Only what the map draws: a free rod's run has no path, start or goal to explain.
+    if (path_drawn()) {
+      if (!fits(1)) return;
+      c.dashed_polyline({{lx, y + mid}, {sym_end, y + mid}}, std::max(1.5f, H / 400.0f), 6.0f, 4.0f, kPath);
+      entry("reference path");
+    }
+    if (view_.layers.has(Layer::kTrail)) {
+      if (!fits(1)) return;
+      c.capsule({lx, y + mid}, {sym_end, y + mid}, 0.5f * std::max(2.0f, H / 300.0f), kTrail);
+      entry("tip trail");
+    }
+    if (!start_goal_drawn() || !fits(1)) return;
     const float mk = std::min(0.45f * fs, std::max(4.0f, H / 90.0f));
     c.disc({lx + mk, y + mid}, mk, kStart);
     c.disc({lx + mk, y + mid}, 0.4f * mk, hex(0xFFFFFF));
@@ -534,7 +555,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   // itself reaches down to it (a frame a few text lines high).
   if (!panel_items_.empty() && panel_items_.back().bottom > bar_top - 0.3f * fs) return;
   scale_bar(c, {lx, by}, 0.6 * (rx - lx), scale_, by + 1.4f * fs, false, small);
-  panel_items_.push_back({"scale bar", lx, rx, bar_top, by + 1.75f * fs});
+  panel_items_.push_back({"scale bar", lx, rx, bar_top, by + 1.75f * fs, {}});
 }
 
 }  // namespace vascsim::render

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -82,8 +83,9 @@ class FramePainter {
   // with the box it was laid out in (px): the HUD, each legend entry, the scale bar. Entries
   // that do not fit a short frame are left out; tests check that none overlaps another.
   struct PanelItem {
-    const char* what;
+    const char* what;  // "hud", "legend" or "scale bar"
     float left, right, top, bottom;
+    std::string label;  // a legend entry's text ("reference path", "Magnetic force")
   };
   const std::vector<PanelItem>& panel_items() const { return panel_items_; }
   // The HUD's rows as last painted: the label shown (shortened, or none, where the value needs
@@ -104,6 +106,13 @@ class FramePainter {
   void paint_arrows(Canvas& c, const std::vector<double>& forces, double px_per_newton, double max_px, float width,
                     Rgba colour);
   void paint_panel(Canvas& c, const FrameState& f);
+  // px per N of the legend arrow of a force layer's arrows; 0 where the layer is off (the map
+  // draws no such arrow, so the legend explains none).
+  double legend_scale(Layer layer) const;
+  // Whether the map draws the reference path and the start and goal markers: their layer is on
+  // and the run has them (a free rod's has neither).
+  bool path_drawn() const;
+  bool start_goal_drawn() const;
   float card_bottom() const;  // px, lower edge of the HUD card of frames without a side panel
   float band_height() const;  // px, the legend band below the map of frames without a side panel
   void paint_band(Canvas& c) const;

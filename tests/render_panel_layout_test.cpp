@@ -83,5 +83,41 @@ TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
   EXPECT_EQ(count(thumbnail, "scale bar"), 1u);
 }
 
+// The legend explains what the map draws, and nothing else: a free rod's run (no path, start or
+// goal) listed "reference path" and "start, goal", and a layer turned off kept its entry.
+TEST(RenderPanelLayout, TheLegendListsOnlyWhatTheMapDraws) {
+  ScratchDir dir("panel_legend");
+  const std::string run = testing::make_run(dir, SyntheticLogSpec{});
+  FrameSource source(run);
+  FrameState state;
+  source.frame(source.frame_count() - 1, state);
+  const auto legend_of = [&](const LogMetadata& metadata, const LayerSet& layers) {
+    View view;
+    view.width = 1280;
+    view.height = 720;
+    view.layers = layers;
+    FramePainter painter(metadata, view, choose_force_scales(source, view), state);
+    Canvas canvas(view.width, view.height);
+    painter.paint(canvas, state, {});
+    std::vector<std::string> labels;
+    for (const auto& item : painter.panel_items())
+      if (std::string(item.what) == "legend") labels.push_back(item.label.substr(0, item.label.find(" \xC3\x98")));
+    return labels;
+  };
+  using Labels = std::vector<std::string>;
+  EXPECT_EQ(legend_of(source.metadata(), LayerSet::defaults()),
+            (Labels{"Magnetic force", "Contact force", "catheter", "reference path", "tip trail", "start, goal"}));
+  LayerSet fewer = LayerSet::defaults();
+  for (const Layer off : {Layer::kMagnetic, Layer::kPath, Layer::kTrail, Layer::kStartGoal}) fewer.set(off, false);
+  EXPECT_EQ(legend_of(source.metadata(), fewer), (Labels{"Contact force", "catheter"}));
+  LayerSet more = LayerSet::defaults();
+  more.set(Layer::kFriction, true);  // the synthetic run logs no friction: nothing to explain
+  EXPECT_EQ(legend_of(source.metadata(), more), legend_of(source.metadata(), LayerSet::defaults()));
+  LogMetadata free_rod = source.metadata();
+  free_rod.path.clear();
+  free_rod.goal = free_rod.start;
+  EXPECT_EQ(legend_of(free_rod, LayerSet::defaults()), (Labels{"Magnetic force", "Contact force", "catheter", "tip trail"}));
+}
+
 }  // namespace
 }  // namespace vascsim::render
