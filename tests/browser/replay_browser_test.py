@@ -936,6 +936,14 @@ def check_killed_run(driver, exe, shots, workdir):
                 f'HTTP {status}, shown {len(shown or b"")} bytes, server {len(body)} bytes')
         R.check(shown != before and abs(float(params['t']) - last) < 1e-6,
                 'killed run: the map at the same time was drawn again (its HUD now says "Run killed")')
+        # Its short range has labels of three digits: the first ("0.00") lost its first digit
+        # past the ruler's left edge. The rows below the bar and its ticks are the labels'.
+        edges = page.d.execute_script(
+            'const c = document.getElementById("timeline-ruler"), g = c.getContext("2d"), dpr = window.devicePixelRatio || 1;'
+            ' const y = Math.round((document.getElementById("timeline-played").offsetTop + 11) * dpr), rows = c.height - y;'
+            ' const ink = x => Array.from(g.getImageData(x, y, 1, rows).data).filter((v, i) => i % 4 === 3 && v > 0).length;'
+            ' return [ink(0), ink(c.width - 1)];')
+        R.check(edges == [0, 0], "killed run: the timeline's end labels are whole (no ink at the ruler's edges)", repr(edges))
         page.shot(shots, 'killed.png')
         page.collect_log()
         R.check(not page.severe, 'no JS errors in the browser log (killed run)', '; '.join(page.severe[:5]))

@@ -579,7 +579,9 @@
         g.fillStyle = '#9AA5B1';
         g.fillRect(x - 0.5, barY + 6, 1, 4);
         g.fillStyle = '#7B8794';
-        g.fillText(v.toFixed(dec), Math.min(w - 12, Math.max(8, x)), h - 2);
+        // The end labels are kept whole inside the track ("0.00" lost its first digit).
+        const label = v.toFixed(dec), half = g.measureText(label).width / 2 + 2;
+        g.fillText(label, Math.min(w - half, Math.max(half, x)), h - 2);
       }
     }
   }
