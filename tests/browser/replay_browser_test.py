@@ -978,6 +978,14 @@ def check_warnings(driver, exe, shots, workdir):
                 'warnings: the summary panel lists the warnings vascsim run printed', f'{texts} vs {printed}')
         marks = page.d.find_elements(By.CSS_SELECTOR, '.event-mark.warning')
         R.check(len(marks) == len(printed), 'warnings: each is marked on the timeline', f'{len(marks)} marks')
+        # The run has no tip actuation: its magnetic force plot is flat zero, on an axis of a
+        # readable unit range (it read "0.000001" beside the zero).
+        ticks = page.wait(lambda d: d.execute_script(
+            'for (const c of document.querySelectorAll("#plot-list canvas"))'
+            ' if ((c.getAttribute("aria-label") || "").startsWith("magnetic force") && c.dataset.yTicks) return c.dataset.yTicks;'
+            ' return false;'), 'the magnetic force plot to draw its axis').split()
+        R.check(len(ticks) >= 2 and float(ticks[-1]) >= 0.5 and all(len(t.partition('.')[2]) <= 1 for t in ticks),
+                'warnings: a flat zero force is plotted on an axis of one display unit', repr(ticks))
         # The squashed rod's note goes to the first frame it was squashed in (summary.json).
         squashed = [n for n in notes if 'stretched or squashed' in n.text]
         want = summary['large_axial_strain']['first_time']

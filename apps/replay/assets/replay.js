@@ -789,7 +789,9 @@
       g.fillText('no data', area.x0 + 8, (top + bottom) / 2);
     } else {
       if (lo >= 0) lo = 0;
-      if (hi - lo <= 0) { hi = lo + (Math.abs(lo) > 0 ? Math.abs(lo) * 0.1 : 1e-9); }
+      // A constant series gets a range of its own size; one that is all zero, a range of one
+      // display unit (1e-9 N showed as "0.000001 mN" beside a flat zero).
+      if (hi - lo <= 0) { hi = lo + (Math.abs(lo) > 0 ? Math.abs(lo) * 0.1 : 1 / unit.f); }
       const pad = (hi - lo) * 0.06;
       const ylo = lo === 0 ? 0 : lo - pad, yhi = hi + pad;
       const Y = (v) => bottom - (v - ylo) / (yhi - ylo) * (bottom - top);
@@ -798,6 +800,7 @@
       const dec = decimalsFor(yt.step);
       g.textAlign = 'right';
       g.textBaseline = 'middle';
+      p.canvas.dataset.yTicks = yt.values.map((v) => v.toFixed(dec)).join(' ');  // the axis as drawn, for tests
       for (const v of yt.values) {
         const y = Math.round(Y(v / unit.f)) + 0.5;
         g.fillStyle = '#EDF0F2';
