@@ -387,6 +387,19 @@ TEST(CliRun, ForcedRunRemovesThePreviousRunsOutputsFirst) {
   fs::remove_all(dir);
 }
 
+// The run's closing line gives the times of a short run in digits that are not all zero: a run of
+// a millisecond printed "1 steps, 0.00 s simulated in 0.00 s".
+TEST(CliRun, TheClosingLineOfAShortRunGivesItsTimes) {
+  const std::string dir = fresh_temp_dir("run_short_line");
+  write_text(dir + "/short.json", R"({"maze": null, "rod": {"nodes": 10}, "solver": {"dt": 1e-3, "adaptive": false},
+      "run": {"duration": 1e-3, "output_interval": 1e-3}})");
+  const CommandResult r = run_vascsim("run " + dir + "/short.json --out " + dir + "/out --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("done: 1 step, 0.001 s simulated in "), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find(" in 0.00 s"), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
 TEST(CliRun, ADirectoryOrADeviceIsNotASceneFile) {
   const std::string dir = fresh_temp_dir("run_scene_kind");
   CommandResult r = run_vascsim("run " + dir + " --out " + dir + "/out");

@@ -33,6 +33,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Two decimals from a second up ("48.00"), three significant digits below: a run of a millisecond
+// read "0.00 s simulated in 0.00 s", and a slow one "(0.0x real time)".
+std::string short_number(double x, const char* from_one = "%.2f") {
+  char text[32];
+  std::snprintf(text, sizeof text, std::fabs(x) >= 1 ? from_one : "%.3g", x);
+  return text;
+}
+
 const std::vector<OptionSpec> kOptions = {
     {"out", "DIR", "run directory: DIR/frames.vlog (frame log), DIR/summary.json (required)"},
     {"force", "", "reuse DIR even if it holds files (they are replaced)"},
@@ -239,12 +247,13 @@ int run_run_command(int argc, char** argv) {
   const RunStatistics& s = run.statistics();
   const char* outcome = ok ? "done" : s.stopped_by.empty() ? "FAILED" : "STOPPED";
   if (scene.solver.mode == SolveMode::kStatic)
-    std::printf("%s: static equilibrium in %d load increments, %lld Newton iterations, %.2f s, %zu frames -> %s\n",
-                outcome, s.steps, s.newton_iterations, s.wall_time, s.frames, log_path.c_str());
+    std::printf("%s: static equilibrium in %d load increments, %lld Newton iterations, %s s, %zu frames -> %s\n",
+                outcome, s.steps, s.newton_iterations, short_number(s.wall_time).c_str(), s.frames, log_path.c_str());
   else
-    std::printf("%s: %d steps, %.2f s simulated in %.2f s (%.1fx real time), %zu frames -> %s\n",
-                outcome, s.steps, s.simulated_time, s.wall_time,
-                s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0, s.frames, log_path.c_str());
+    std::printf("%s: %d step%s, %s s simulated in %s s (%sx real time), %zu frames -> %s\n", outcome, s.steps,
+                s.steps == 1 ? "" : "s", short_number(s.simulated_time).c_str(), short_number(s.wall_time).c_str(),
+                short_number(s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0, "%.1f").c_str(), s.frames,
+                log_path.c_str());
   // Where a controlled run's steps went: what a user tuning rtol or the floors looks at first.
   if (scene.solver.mode != SolveMode::kStatic && run.model().solver.adaptive == StepControl::kError)
     std::printf("error control: mean step %.3g s, %d steps rejected over the tolerance, %d kept over it at a floor\n",
