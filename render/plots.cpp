@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <limits>
 
+#include <glm/common.hpp>
+
 #include "render/frame_painter.h"
 #include "render/label_placer.h"
 #include "render/number_format.h"
@@ -352,24 +354,32 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     const double nominal = 0.05 * (a.right - a.left), px_per_n = typical > 0 ? nominal / typical : 0;
     if (typical > 0) entries.back().second = contact_entry(nominal);
     const int label_font = static_cast<int>(0.8 * font);
+    // Every rod first, then the labels over them: a label is placed clear of every snapshot's
+    // rod where there is room (ahead of one tip it could hide another snapshot's rod).
     LabelPlacer labels({{a.left, a.top}, {a.right, a.bottom}});
+    std::vector<std::vector<glm::vec2>> rods(kSnapshots);
     for (int k = 0; k < kSnapshots; ++k) {
       const FrameState& f = snapshots[k];
       const float shade = 0.25f + 0.75f * k / (kSnapshots - 1);  // later snapshots darker
       const Rgba rod{0.85f - 0.75f * shade, 0.90f - 0.65f * shade, 0.97f - 0.45f * shade, 1};
-      std::vector<glm::vec2> pts;
+      std::vector<glm::vec2>& pts = rods[k];
       for (std::size_t n = 0; n < f.node_count(); ++n) pts.push_back(a.map(f.node(n).x() * to_mm, f.node(n).y() * to_mm));
       c.polyline(pts, 3.5f, rod);
+      for (std::size_t n = 1; n < pts.size(); ++n)
+        labels.avoid({glm::min(pts[n - 1], pts[n]) - glm::vec2(2.0f), glm::max(pts[n - 1], pts[n]) + glm::vec2(2.0f)});
       for (std::size_t n = 0; px_per_n > 0 && n < f.node_count() && !f.contact.empty(); ++n) {
         glm::vec2 d(float(f.contact[2 * n] * px_per_n), float(-f.contact[2 * n + 1] * px_per_n));
         const float len = std::sqrt(d.x * d.x + d.y * d.y);
         if (len > 2.5f * nominal) d *= float(2.5 * nominal) / len;
         if (len >= 1) c.arrow(pts[n], pts[n] + d, 2, kContact);
       }
+    }
+    for (int k = 0; k < kSnapshots; ++k) {
+      const std::vector<glm::vec2>& pts = rods[k];
       char label[32];
-      std::snprintf(label, sizeof label, "t = %.2f s", f.time);
+      std::snprintf(label, sizeof label, "t = %.2f s", snapshots[k].time);
       // Ahead of the tip, where this snapshot's own rod is not, on a light card (it may still
-      // fall on a wall or another snapshot).
+      // fall on a wall).
       glm::vec2 ahead = pts.size() > 1 ? pts.back() - pts[pts.size() - 2] : glm::vec2(1, 0);
       const float ahead_len = std::sqrt(ahead.x * ahead.x + ahead.y * ahead.y);
       ahead = ahead_len > 0 ? ahead / ahead_len : glm::vec2(1, 0);
@@ -380,11 +390,11 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
         at = {ahead.x >= 0 ? tip.x : tip.x - w, tip.y + 0.35f * h};
       else
         at = {tip.x - 0.5f * w, ahead.y > 0 ? tip.y + h : tip.y - 0.3f * h};
-      // Moved up or down off the labels before it (a rod that hardly moved puts every tip on one
-      // spot), with a leader back to its tip.
+      // Moved off the labels before it (a rod that hardly moved puts every tip on one spot) and
+      // off the rods, with a leader back to its tip.
       const LabelBox wanted{at + glm::vec2(-3, -1.05f * h), at + glm::vec2(w + 3, 0.35f * h)};
       const LabelBox box = labels.place(wanted);
-      if (box.min.y != wanted.min.y) {
+      if (box.min != wanted.min) {
         const glm::vec2 end(std::clamp(tip.x, box.min.x, box.max.x), std::clamp(tip.y, box.min.y, box.max.y));
         c.polyline({pts.back(), end}, 1.0f, hex(0x868E96));
       }

@@ -58,5 +58,27 @@ TEST(RenderLabelPlacer, ALabelPastAnEdgeIsMovedInside) {
   EXPECT_FLOAT_EQ(left.max.x, 180.0f);
 }
 
+// A label is moved off what it should not hide (another snapshot's rod): a vertical rod through
+// the spot wanted, which no move up or down clears, sends it sideways, by half its width; where
+// nothing clears it, it goes where the labels alone allow, as without anything to avoid.
+TEST(RenderLabelPlacer, ALabelIsMovedOffWhatItShouldNotHide) {
+  LabelPlacer placer({{0, 0}, {1200, 800}});
+  const LabelBox wanted{{100, 400}, {180, 416}};
+  for (float y = 0; y < 800; y += 4) placer.avoid({{128, y}, {132, y + 4}});  // a rod at x = 130
+  const LabelBox placed = placer.place(wanted);
+  EXPECT_EQ(placed.min.y, wanted.min.y) << "moved up or down, along the rod";
+  EXPECT_TRUE(placed.min.x >= 132 || placed.max.x <= 128) << "still over the rod at x " << placed.min.x << ".." << placed.max.x;
+  EXPECT_FLOAT_EQ(std::abs(placed.min.x - wanted.min.x), 40.0f) << "further than half its width";
+  // A rod clear of the spot wanted changes nothing.
+  LabelPlacer beside({{0, 0}, {1200, 800}});
+  beside.avoid({{300, 0}, {304, 800}});
+  EXPECT_EQ(beside.place(wanted).min, wanted.min);
+  // Covered everywhere: placed as the labels alone allow (the second below the first).
+  LabelPlacer covered({{0, 0}, {1200, 800}});
+  covered.avoid({{0, 0}, {1200, 800}});
+  EXPECT_EQ(covered.place(wanted).min, wanted.min);
+  EXPECT_EQ(covered.place(wanted).min, wanted.min + glm::vec2(0, 16));
+}
+
 }  // namespace
 }  // namespace vascsim::render
