@@ -368,7 +368,12 @@ bool FramePainter::start_goal_drawn() const {
 
 float FramePainter::card_bottom() const {
   const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = 1.45f * fs;
-  return 0.5f * pad + (4.3f + (card_title_line_ ? 1.3f : 0.0f) + static_cast<float>(ended_early_.count())) * row + pad;
+  const float title = card_title_line_ ? 1.3f : 0.0f, rows = 4.0f + static_cast<float>(ended_early_.count());
+  const float natural = 0.5f * pad + (0.3f + title + rows) * row + pad;
+  // A card taller than the frame even without its title (a thumbnail of two runs that ended
+  // early) gives up its bottom margin first: it ended 3 px past a 90 px frame with room to spare.
+  const float text_bottom = 1.5f * pad + fs + (title + rows - 1.0f) * row + 0.35f * fs;
+  return std::min(natural, std::max(text_bottom + 0.1f * pad, static_cast<float>(view_.height) - 0.5f));
 }
 
 float FramePainter::band_height() const {
@@ -479,7 +484,11 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
         case EarlyEnd::How::kKilled: field({"Compared run killed", "Compared killed", "B killed"}, buf, kFailure, kFailure); break;
       }
     }
-    record("hud", hud_top, y - row);
+    // On a card, the card is what it was laid out in.
+    if (side_panel_)
+      record("hud", hud_top, y - row);
+    else
+      panel_items_.push_back({"hud", x0, x1, y0, card_bottom(), {}});
   }
   if (!side_panel_ || !legend) return;
 

@@ -80,8 +80,9 @@ class FramePainter {
   ViewTransform transform(const FrameState& frame) const;
   double pixels_per_metre() const { return scale_; }
   // What the panel (or the HUD card of a narrow frame) drew on the last frame, top to bottom,
-  // with the box it was laid out in (px): the HUD, each legend entry, the scale bar. Entries
-  // that do not fit a short frame are left out; tests check that none overlaps another.
+  // with the box it was laid out in (px): the HUD (in a narrow frame, its whole card), each
+  // legend entry, the scale bar. Entries that do not fit a short frame are left out; tests check
+  // that none overlaps another.
   struct PanelItem {
     const char* what;  // "hud", "legend" or "scale bar"
     float left, right, top, bottom;
