@@ -397,6 +397,11 @@ TEST(CliRun, TheClosingLineOfAShortRunGivesItsTimes) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("done: 1 step, 0.001 s simulated in "), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find(" in 0.00 s"), std::string::npos) << r.output;
+  // A measured time keeps three significant digits, zeros too ("0.200 s", not "0.2 s").
+  const std::size_t in = r.output.find(" s simulated in ") + 16, end = r.output.find(" s (", in);
+  ASSERT_NE(end, std::string::npos) << r.output;
+  const std::string wall = r.output.substr(in, end - in);
+  EXPECT_EQ(wall.size() - wall.find_first_not_of("0."), 3u) << wall;
   fs::remove_all(dir);
 }
 

@@ -41,6 +41,14 @@ std::string short_number(double x, const char* from_one = "%.2f") {
   return text;
 }
 
+// A measured time likewise, in decimals with its zeros ("0.200", "0.0000123"; %g gave "0.2").
+std::string measured_seconds(double x) {
+  if (!(x > 0) || x >= 1) return short_number(x);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", std::min(12, 2 - static_cast<int>(std::floor(std::log10(x)))), x);
+  return text;
+}
+
 const std::vector<OptionSpec> kOptions = {
     {"out", "DIR", "run directory: DIR/frames.vlog (frame log), DIR/summary.json (required)"},
     {"force", "", "reuse DIR even if it holds files (they are replaced)"},
@@ -248,10 +256,10 @@ int run_run_command(int argc, char** argv) {
   const char* outcome = ok ? "done" : s.stopped_by.empty() ? "FAILED" : "STOPPED";
   if (scene.solver.mode == SolveMode::kStatic)
     std::printf("%s: static equilibrium in %d load increments, %lld Newton iterations, %s s, %zu frames -> %s\n",
-                outcome, s.steps, s.newton_iterations, short_number(s.wall_time).c_str(), s.frames, log_path.c_str());
+                outcome, s.steps, s.newton_iterations, measured_seconds(s.wall_time).c_str(), s.frames, log_path.c_str());
   else
     std::printf("%s: %d step%s, %s s simulated in %s s (%sx real time), %zu frames -> %s\n", outcome, s.steps,
-                s.steps == 1 ? "" : "s", short_number(s.simulated_time).c_str(), short_number(s.wall_time).c_str(),
+                s.steps == 1 ? "" : "s", short_number(s.simulated_time).c_str(), measured_seconds(s.wall_time).c_str(),
                 short_number(s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0, "%.1f").c_str(), s.frames,
                 log_path.c_str());
   // Where a controlled run's steps went: what a user tuning rtol or the floors looks at first.
