@@ -68,7 +68,7 @@ TEST(RenderLabelPlacer, ALabelIsMovedOffWhatItShouldNotHide) {
   const LabelBox placed = placer.place(wanted);
   EXPECT_EQ(placed.min.y, wanted.min.y) << "moved up or down, along the rod";
   EXPECT_TRUE(placed.min.x >= 132 || placed.max.x <= 128) << "still over the rod at x " << placed.min.x << ".." << placed.max.x;
-  EXPECT_FLOAT_EQ(std::abs(placed.min.x - wanted.min.x), 40.0f) << "further than half its width";
+  EXPECT_FLOAT_EQ(std::abs(placed.min.x - wanted.min.x), 40.0f) << "moved by half its width, the nearest sideways spot clear of the rod";
   // A rod clear of the spot wanted changes nothing.
   LabelPlacer beside({{0, 0}, {1200, 800}});
   beside.avoid({{300, 0}, {304, 800}});
