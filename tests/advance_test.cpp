@@ -8,6 +8,7 @@
 // F L' / L to zero at the free tip (L' = L - dl), so the rod is shorter by F L'^2 / (2 L EA).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -76,6 +77,32 @@ TEST(Advance, InAStraightVesselTheRodSlidesAsOneAndTheDrivePushesAgainstItsAxial
   EXPECT_NEAR(last[tip_x + 1], first[tip_x + 1], 1e-9) << "and stays on the axis";
   EXPECT_GT(run.statistics().feed_force_max, 0.99 * expected);
   EXPECT_LT(run.statistics().feed_force_mean, run.statistics().feed_force_max);
+}
+
+// A rod only pushed from its root (control.mode "none") logs the drive's push and the fed
+// length, and no magnetic force, target or tracking error: nothing steers its tip, so they would
+// be zeros and the distance to a target the tip does not follow (the video showed a "tip error"
+// of 95 mm for the coil chamber). The same scene with its tip steered logs all of them.
+TEST(Advance, ARodOnlyPushedFromItsRootLogsItsFeedAndNoTipControl) {
+  const auto channel_names = [](const std::string& text) {
+    vascsim::Run run(compile(read_scene_text(text, "advance.json")));
+    std::vector<std::string> names;
+    for (const auto& c : run.channels()) names.push_back(c.name);
+    return names;
+  };
+  const auto has = [](const std::vector<std::string>& names, const char* name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
+  const std::vector<std::string> pushed = channel_names(kStraightVessel);
+  for (const char* name : {"feed/force", "feed/length", "position"}) EXPECT_TRUE(has(pushed, name)) << name;
+  for (const char* name : {"force/actuation", "tip/reference", "tip/error"}) EXPECT_FALSE(has(pushed, name)) << name;
+
+  std::string steered_text = kStraightVessel;
+  const std::string none = R"("mode": "none")";
+  steered_text.replace(steered_text.find(none), none.size(), R"("mode": "force")");
+  const std::vector<std::string> steered = channel_names(steered_text);
+  for (const char* name : {"feed/force", "feed/length", "force/actuation", "tip/reference", "tip/error"})
+    EXPECT_TRUE(has(steered, name)) << name;
 }
 
 // The feed force of a frame inside a step is interpolated between the step's solved ends, as the

@@ -73,16 +73,20 @@ Run::Run(std::shared_ptr<const Model> model)
   channels_.push_back({channel::kVelocity, "m/s", ChannelLayout::kNodeVectors, node_values});
   for (const auto& f : model_->forces)
     if (!contains(force_channels_, f->channel())) force_channels_.push_back(f->channel());
-  // Every navigation run logs its magnetic force, also when its actuation has no force module.
-  if (navigation_ && !contains(force_channels_, channel::kActuationForce)) force_channels_.push_back(channel::kActuationForce);
+  // Every run that steers its tip logs the magnetic force, also when its actuation has no force
+  // module; a run that does not (control.mode "none": a catheter only pushed from its root) logs
+  // no magnetic force, target or tracking error, which would only be zeros and a distance to a
+  // target nothing follows.
+  if (tip_controlled() && !contains(force_channels_, channel::kActuationForce))
+    force_channels_.push_back(channel::kActuationForce);
   for (const auto& name : force_channels_) channels_.push_back({name, "N", ChannelLayout::kNodeVectors, node_values});
-  if (navigation_) {
+  if (tip_controlled()) {
     channels_.push_back({channel::kTipReference, "m", ChannelLayout::kVector, 2});
     channels_.push_back({channel::kTipError, "m", ChannelLayout::kScalars, 1});
-    if (scene_.control.advance.enabled()) {
-      channels_.push_back({channel::kFeedForce, "N", ChannelLayout::kScalars, 1});
-      channels_.push_back({channel::kFeedLength, "m", ChannelLayout::kScalars, 1});
-    }
+  }
+  if (navigation_ && scene_.control.advance.enabled()) {
+    channels_.push_back({channel::kFeedForce, "N", ChannelLayout::kScalars, 1});
+    channels_.push_back({channel::kFeedLength, "m", ChannelLayout::kScalars, 1});
   }
 }
 
@@ -311,11 +315,13 @@ void Run::update_statistics(double dt, const Controls& controls) {
   stats_.tip_error_max = std::max(stats_.tip_error_max, error);
   error_square_time_ += error * error * dt;
   stats_.tip_error_rms = std::sqrt(error_square_time_ / std::max(state_.t, 1e-300));
-  // The magnetic force as applied at the end of the step (the servo is implicit).
-  const Vec2 actuation = solved_force(channel::kActuationForce, state_, controls).reshaped(2, n).rowwise().sum();
-  stats_.actuation_force_max = std::max(stats_.actuation_force_max, actuation.norm());
-  actuation_time_ += actuation.norm() * dt;
-  stats_.actuation_force_mean = actuation_time_ / std::max(state_.t, 1e-300);
+  if (tip_controlled()) {
+    // The magnetic force as applied at the end of the step (the servo is implicit).
+    const Vec2 actuation = solved_force(channel::kActuationForce, state_, controls).reshaped(2, n).rowwise().sum();
+    stats_.actuation_force_max = std::max(stats_.actuation_force_max, actuation.norm());
+    actuation_time_ += actuation.norm() * dt;
+    stats_.actuation_force_mean = actuation_time_ / std::max(state_.t, 1e-300);
+  }
   if (!stats_.goal_reached && (tip - navigation_->environment.goal).norm() <= 0.5 * navigation_->environment.goal_radius) {
     stats_.goal_reached = true;
     stats_.goal_time = state_.t;
@@ -374,16 +380,16 @@ void Run::record(FrameSink& sink, const State& frame) {
       values.insert(values.end(), force.data(), force.data() + force.size());
     }
   }
-  if (navigation_) {
+  if (tip_controlled()) {
     const Vec2 reference = navigation_->trajectory->position(controller_->reference_time(frame.t));
     values.push_back(reference.x());
     values.push_back(reference.y());
     values.push_back((reference - frame.position(model_->nodes() - 1)).norm());
-    if (scene_.control.advance.enabled()) {
-      // The drive's reaction, solved at the step's ends, interpolated in between like the forces.
-      values.push_back((1.0 - s) * feed_force_at_step_start_ + s * feed_force_at_step_end_);
-      values.push_back(scene_.control.advance.fed_length(frame.t));
-    }
+  }
+  if (navigation_ && scene_.control.advance.enabled()) {
+    // The drive's reaction, solved at the step's ends, interpolated in between like the forces.
+    values.push_back((1.0 - s) * feed_force_at_step_start_ + s * feed_force_at_step_end_);
+    values.push_back(scene_.control.advance.fed_length(frame.t));
   }
   sink.write(frame.t, values);
   ++stats_.frames;

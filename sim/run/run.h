@@ -153,6 +153,8 @@ class Run {
   const Eigen::VectorXd& solved_force(const std::string& name, const State& at, const Controls& controls);
   void update_statistics(double dt, const Controls& controls);
   double feed_force() const;  // N, control.advance
+  // A navigation run whose tip is driven (control.mode other than "none").
+  bool tip_controlled() const { return navigation_ && scene_.control.mode != ActuationMode::kNone; }
   // The force of every module writing channel `name` at a solved state `at` (state_ or step_start_).
   Eigen::VectorXd channel_force(const std::string& name, const Controls& controls, const State& at) const;
   // What the log and the statistics report for channel `name`: the modules' force, with the
