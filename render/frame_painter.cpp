@@ -165,6 +165,8 @@ ForceScales choose_force_scales(const FrameSource& source, const View& view) {
 FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const ForceScales& scales,
                            const FrameState& first_frame, const RunsEndedEarly& ended_early)
     : meta_(metadata), view_(view), scales_(scales), ended_early_(ended_early), world_(world_box(metadata, first_frame)) {
+  hud_quantities_ = {first_frame.tip_error >= 0, !first_frame.actuation.empty(), first_frame.has_feed,
+                     !first_frame.contact.empty()};
   // The lumen is triangulated once, in metres; each frame only moves the vertices. A single
   // axis-aligned rectangle (a maze logs its bounds so) is filled with a clear as before: cheaper,
   // and maze pictures stay exactly what they were.
@@ -182,8 +184,9 @@ FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const 
   // instead: a panel squeezed to nothing drew its values over the map without their labels.
   map_x1_ = static_cast<float>(side_panel_ ? std::round(w - std::max(0.28 * w, 15.0 * font_px_)) : w);
   if (map_x1_ - map_x0_ < 0.3 * w) side_panel_ = false, map_x1_ = static_cast<float>(w);
-  // A card taller than the frame (the thumbnail of a run that ended early) leaves out the title, not a value.
-  if (hud && !side_panel_ && card_bottom() > h) card_title_line_ = false;
+  // A HUD taller than the frame (the thumbnail of a run that ended early; a fed run's six rows in
+  // a frame 100 px high) leaves out the title, not a value.
+  if (hud && (side_panel_ ? hud_text_bottom() : card_bottom()) > h) title_line_ = false;
   // Without a side panel the HUD card takes a band across the top: the map starts below it, so
   // the card never hides a wall or the rod.
   // Likewise the legend (arrow scales, scale bar) takes a band across the bottom.
@@ -275,13 +278,11 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
 
   // Arrows start at the node they act on and point along the force (screen y flips).
   const float contact_w = contact_arrow_width(h);
-  if (on.has(Layer::kDrag)) paint_arrows(c, f.drag, scales_.drag_px_per_newton, scales_.drag_max_px, contact_w, kDrag);
-  if (on.has(Layer::kFriction))
-    paint_arrows(c, f.friction, scales_.contact_px_per_newton, scales_.contact_max_px, contact_w, kFriction);
-  if (on.has(Layer::kContact))
-    paint_arrows(c, f.contact, scales_.contact_px_per_newton, scales_.contact_max_px, contact_w, kContact);
-  if (on.has(Layer::kMagnetic) && scales_.actuation_px_per_newton > 0 && !f.actuation.empty()) {
-    const Vec2 F = f.actuation_total() * scales_.actuation_px_per_newton;
+  paint_arrows(c, f.drag, arrow_scale(Layer::kDrag), scales_.drag_max_px, contact_w, kDrag);
+  paint_arrows(c, f.friction, arrow_scale(Layer::kFriction), scales_.contact_max_px, contact_w, kFriction);
+  paint_arrows(c, f.contact, arrow_scale(Layer::kContact), scales_.contact_max_px, contact_w, kContact);
+  if (arrow_scale(Layer::kMagnetic) > 0 && !f.actuation.empty()) {
+    const Vec2 F = f.actuation_total() * arrow_scale(Layer::kMagnetic);
     if (F.norm() >= 1.0)
       c.arrow(scratch_.back(), scratch_.back() + arrow_vector(F, scales_.actuation_max_px), actuation_arrow_width(h), kActuation);
   }
@@ -349,7 +350,7 @@ void FramePainter::paint_arrows(Canvas& c, const std::vector<double>& forces, do
   }
 }
 
-double FramePainter::legend_scale(Layer layer) const {
+double FramePainter::arrow_scale(Layer layer) const {
   if (!view_.layers.has(layer)) return 0.0;
   switch (layer) {
     case Layer::kMagnetic: return scales_.actuation_px_per_newton;
@@ -368,12 +369,18 @@ bool FramePainter::start_goal_drawn() const {
 
 float FramePainter::card_bottom() const {
   const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = 1.45f * fs;
-  const float title = card_title_line_ ? 1.3f : 0.0f, rows = 4.0f + static_cast<float>(ended_early_.count());
+  const float title = title_line_ ? 1.3f : 0.0f, rows = static_cast<float>(hud_quantities_.rows() + ended_early_.count());
   const float natural = 0.5f * pad + (0.3f + title + rows) * row + pad;
   // A card taller than the frame even without its title (a thumbnail of two runs that ended
   // early) gives up its bottom margin first: it ended 3 px past a 90 px frame with room to spare.
-  const float text_bottom = 1.5f * pad + fs + (title + rows - 1.0f) * row + 0.35f * fs;
+  const float text_bottom = 0.5f * pad + hud_text_bottom();
   return std::min(natural, std::max(text_bottom + 0.1f * pad, static_cast<float>(view_.height) - 0.5f));
+}
+
+float FramePainter::hud_text_bottom() const {
+  const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = 1.45f * fs;
+  const float title = title_line_ ? 1.3f : 0.0f, rows = static_cast<float>(hud_quantities_.rows() + ended_early_.count());
+  return pad + fs + (title + rows - 1.0f) * row + 0.35f * fs;
 }
 
 float FramePainter::band_height() const {
@@ -400,8 +407,8 @@ void FramePainter::paint_band(Canvas& c) const {
       c.text(what, {x, y}, small, kInk);
     x += half;
   };
-  arrow_entry(legend_scale(Layer::kMagnetic), scales_.actuation_reference, kActuation, actuation_arrow_width(H), "Magnetic");
-  arrow_entry(legend_scale(Layer::kContact), scales_.contact_reference, kContact, contact_arrow_width(H), "Contact");
+  arrow_entry(arrow_scale(Layer::kMagnetic), scales_.actuation_reference, kActuation, actuation_arrow_width(H), "Magnetic");
+  arrow_entry(arrow_scale(Layer::kContact), scales_.contact_reference, kContact, contact_arrow_width(H), "Contact");
   y += row;
   scale_bar(c, {x0 + 0.5f * pad, y + mid}, 0.3 * (x1 - x0), scale_, y, true, small);
 }
@@ -438,7 +445,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   };
   if (hud) {
     const float hud_top = y;
-    if (!meta_.title.empty() && (side_panel_ || card_title_line_)) {
+    if (!meta_.title.empty() && title_line_) {
       c.text(meta_.title, {lx, y}, static_cast<int>(std::lround(1.1 * fs)), kInk);
       y += 1.3f * row;
     }
@@ -457,14 +464,21 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
         }
       if (shown) c.text(shown, {lx, y}, fs, label_colour);
       c.text(value, {rx, y}, fs, value_colour, TextAlign::kRight);
-      hud_fields_.push_back({shown ? shown : "", shown ? lx + c.text_width(shown, fs) : lx, value_left});
+      hud_fields_.push_back({shown ? shown : "", shown ? lx + c.text_width(shown, fs) : lx, value_left, value});
       y += row;
     };
     field({"Time", "t"}, buf);
-    field({"Tip error", "Error"}, f.tip_error >= 0 ? format_value(f.tip_error, mm, 2) : std::string("n/a"));
-    field({"Magnetic force", "Magnetic", "Force"},
-          f.actuation.empty() ? std::string("n/a") : format_value(f.actuation_total().norm(), scales_.unit, 2));
-    field({"Max contact", "Contact"}, f.contact.empty() ? std::string("n/a") : format_value(f.max_contact(), scales_.unit, 2));
+    if (hud_quantities_.tip_error) field({"Tip error", "Error"}, format_value(f.tip_error, mm, 2));
+    if (hud_quantities_.magnetic)
+      field({"Magnetic force", "Magnetic", "Force"}, format_value(f.actuation_total().norm(), scales_.unit, 2));
+    if (hud_quantities_.feed) {
+      // The drive's push at the force arrows' unit; a pull shows with its sign (not a push too
+      // small to show: "-0.00 mN").
+      const double push = std::abs(f.feed_force * scales_.unit.factor) < 0.005 ? 0.0 : f.feed_force;
+      field({"Feed force", "Feed"}, format_value(push, scales_.unit, 2));
+      field({"Fed length", "Fed"}, format_value(f.fed_length, mm, 1));
+    }
+    if (hud_quantities_.contact) field({"Max contact", "Contact"}, format_value(f.max_contact(), scales_.unit, 2));
     // Literals: hud_fields() keeps the label shown.
     if (const auto& end = ended_early_.run) {
       std::snprintf(buf, sizeof buf, "at %.3f s", end->at);
@@ -520,13 +534,13 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
   // A lambda so that the first entry that does not fit ends the list (those below need less room
   // only by accident, and a gap in the order reads as a missing symbol).
   const auto symbols = [&] {
-    arrow_entry(legend_scale(Layer::kMagnetic), scales_.actuation_reference, kActuation, actuation_arrow_width(H),
+    arrow_entry(arrow_scale(Layer::kMagnetic), scales_.actuation_reference, kActuation, actuation_arrow_width(H),
                 "Magnetic force");
-    arrow_entry(legend_scale(Layer::kContact), scales_.contact_reference, kContact, contact_arrow_width(H), "Contact force");
+    arrow_entry(arrow_scale(Layer::kContact), scales_.contact_reference, kContact, contact_arrow_width(H), "Contact force");
     if (!f.friction.empty())
-      arrow_entry(legend_scale(Layer::kFriction), scales_.contact_reference, kFriction, contact_arrow_width(H), "Friction force");
+      arrow_entry(arrow_scale(Layer::kFriction), scales_.contact_reference, kFriction, contact_arrow_width(H), "Friction force");
     if (!f.drag.empty())
-      arrow_entry(legend_scale(Layer::kDrag), scales_.drag_reference, kDrag, contact_arrow_width(H), "Drag force");
+      arrow_entry(arrow_scale(Layer::kDrag), scales_.drag_reference, kDrag, contact_arrow_width(H), "Drag force");
     if (!fits(1)) return;
     const float r = std::max(0.5f * float(view_.min_rod_width_px), static_cast<float>(meta_.rod_outer_radius * scale_));
     c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kRodEdge);

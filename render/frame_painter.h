@@ -1,6 +1,6 @@
 // Draws one frame of a run on a canvas: the vessel lumen and walls, the reference path, start
 // and goal, the tip trail, the rod at its true radius, node markers, force arrows, and a panel
-// with the HUD (time, tip error, forces), the legend and a scale bar; each is a layer of the
+// with the HUD (time and what the log records of tip error, forces and feed), the legend and a scale bar; each is a layer of the
 // View and drawn only when on. Pure drawing: it reads a FrameState and the log metadata, and
 // holds only the view, the arrow scales and which runs failed, fixed for a whole video.
 #pragma once
@@ -68,7 +68,8 @@ struct ViewTransform {
 
 class FramePainter {
  public:
-  // `first_frame`: the log's frame 0 (the fit camera of a log without bounds frames it).
+  // `first_frame`: the log's frame 0 (the fit camera of a log without bounds frames it; the HUD
+  // has a row for each quantity it records).
   FramePainter(const LogMetadata& metadata, const View& view, const ForceScales& scales,
                const FrameState& first_frame, const RunsEndedEarly& ended_early = {});
   // `trail`: tip positions so far (m), oldest first. `overlay`: another run's state at the same
@@ -94,6 +95,7 @@ class FramePainter {
   struct HudField {
     const char* label;  // "" for none
     float label_right, value_left;
+    std::string value;  // as drawn: "5.00 mN"
   };
   const std::vector<HudField>& hud_fields() const { return hud_fields_; }
 
@@ -107,14 +109,16 @@ class FramePainter {
   void paint_arrows(Canvas& c, const std::vector<double>& forces, double px_per_newton, double max_px, float width,
                     Rgba colour);
   void paint_panel(Canvas& c, const FrameState& f);
-  // px per N of the legend arrow of a force layer's arrows; 0 where the layer is off (the map
-  // draws no such arrow, so the legend explains none).
-  double legend_scale(Layer layer) const;
+  // px per N of a force layer's arrows, on the map and in the legend alike; 0 where the layer is
+  // off (the map draws no such arrow, so the legend explains none).
+  double arrow_scale(Layer layer) const;
   // Whether the map draws the reference path and the start and goal markers: their layer is on
   // and the run has them (a free rod's has neither).
   bool path_drawn() const;
   bool start_goal_drawn() const;
   float card_bottom() const;  // px, lower edge of the HUD card of frames without a side panel
+  // px, how far below the panel's or card's top the HUD's last row of text reaches
+  float hud_text_bottom() const;
   float band_height() const;  // px, the legend band below the map of frames without a side panel
   void paint_band(Canvas& c) const;
 
@@ -127,7 +131,13 @@ class FramePainter {
   float map_y0_;                  // px, top of the map (below the HUD card of narrow frames)
   float map_y1_;                  // px, bottom of the map (above the legend band of narrow frames)
   bool side_panel_;
-  bool card_title_line_ = true;   // the HUD card keeps a line for the title (not on a frame too short)
+  bool title_line_ = true;        // the HUD keeps a line for the title (not on a frame too short)
+  // The HUD shows what the log records (from its first frame): a rod only pushed from its root
+  // has no tip error or magnetic force to show, and its feed instead.
+  struct HudQuantities {
+    bool tip_error = false, magnetic = false, feed = false, contact = false;
+    int rows() const { return 1 + tip_error + magnetic + 2 * feed + contact; }  // time first
+  } hud_quantities_;
   bool overlay_shown_ = false;    // the frame being painted shows another run's rod
   double scale_ = 1;              // px per m
   int font_px_;

@@ -45,6 +45,11 @@ FrameSource::FrameSource(const std::string& run_path)
   drag_ = require_layout(h, channel::kDragForce, ChannelLayout::kNodeVectors, log_path_);
   reference_ = require_layout(h, channel::kTipReference, ChannelLayout::kVector, log_path_);
   tip_error_ = require_layout(h, channel::kTipError, ChannelLayout::kScalars, log_path_);
+  // Both or neither: the run writes them together (control.advance).
+  feed_force_ = require_layout(h, channel::kFeedForce, ChannelLayout::kScalars, log_path_);
+  fed_length_ = require_layout(h, channel::kFeedLength, ChannelLayout::kScalars, log_path_);
+  if (feed_force_ < 0) fed_length_ = -1;
+  if (fed_length_ < 0) feed_force_ = -1;
   frame_count_ = reader_.frame_count();
   if (frame_count_ == 0) throw InputError(log_path_ + ": frame log has no complete frame");
   first_time_ = checked_time(0);
@@ -126,6 +131,9 @@ void FrameSource::unpack(const std::vector<double>& r, FrameState& out) const {
     out.reference = Vec2(r[off], r[off + 1]);
   }
   out.tip_error = tip_error_ >= 0 ? r[h.channel_offset(tip_error_)] : -1.0;
+  out.has_feed = feed_force_ >= 0;
+  out.feed_force = out.has_feed ? r[h.channel_offset(feed_force_)] : 0.0;
+  out.fed_length = out.has_feed ? r[h.channel_offset(fed_length_)] : 0.0;
 }
 
 void FrameSource::frame(std::size_t i, FrameState& out) const {

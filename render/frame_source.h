@@ -1,7 +1,7 @@
 // Reads a run's frame log for the renderer: the metadata, and the state at any time, linearly
 // interpolated between the two logged frames around it so a video's frame rate need not match
-// the log's output interval. Only the position channel is required; forces, the reference and
-// the tip error are used when the log has them.
+// the log's output interval. Only the position channel is required; forces, the reference, the
+// tip error and the feed are used when the log has them.
 #pragma once
 
 #include <cstddef>
@@ -27,6 +27,9 @@ struct FrameState {
   bool has_reference = false;
   Vec2 reference = Vec2::Zero();   // m
   double tip_error = -1;           // m; < 0 if unknown
+  bool has_feed = false;           // the root is fed through the inlet (control.advance)
+  double feed_force = 0;           // N, the drive's push along the inlet (negative: pulling back)
+  double fed_length = 0;           // m, fed so far
 
   std::size_t node_count() const { return position.size() / 2; }
   Vec2 node(std::size_t i) const { return {position[2 * i], position[2 * i + 1]}; }
@@ -120,7 +123,8 @@ class FrameSource {
   std::optional<EarlyEnd> ended_early_;
   std::size_t frame_count_ = 0;
   double first_time_ = 0, last_time_ = 0;
-  int position_ = -1, actuation_ = -1, contact_ = -1, friction_ = -1, drag_ = -1, reference_ = -1, tip_error_ = -1;
+  int position_ = -1, actuation_ = -1, contact_ = -1, friction_ = -1, drag_ = -1, reference_ = -1, tip_error_ = -1,
+      feed_force_ = -1, fed_length_ = -1;
   mutable std::vector<double> record_a_, record_b_;
   mutable std::size_t times_checked_ = 0;  // frames [0, times_checked_) passed check_times
   mutable double last_checked_time_ = 0;   // s

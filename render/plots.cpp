@@ -14,6 +14,7 @@
 #include "render/png_writer.h"
 #include "sim/io/output_file.h"
 #include "sim/io/run_files.h"
+#include "sim/log/channel_names.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -31,13 +32,16 @@ constexpr Rgba kPath = hex(0x4C6EF5);
 constexpr Rgba kTip = hex(0xF08C00);
 constexpr Rgba kSecondary = hex(0x74B816);
 constexpr Rgba kTertiary = hex(0x1098AD);
+constexpr Rgba kFeed = hex(0x2B8A3E);
 
 // Time series of a run, sampled at up to ~5000 logged frames.
 struct Series {
   std::vector<double> t;                     // s
   std::vector<Vec2> tip, actuation;          // m, N
   std::vector<double> error, max_contact, total_contact;  // m, N, N
-  bool has_actuation = false, has_contact = false, has_error = false;
+  std::vector<double> feed_force;                          // N
+  bool has_actuation = false, has_contact = false, has_error = false, has_feed = false;
+  bool error_from_path = false;  // no target logged: the error is the distance to the path
 };
 
 double distance_to_polyline(const Polyline& path, Vec2 p) {
@@ -68,9 +72,12 @@ Series collect(const FrameSource& source, FrameRange frames) {
     // Tracking error: the logged value, else the distance to the controller's target, else to the path.
     double e = f.tip_error;
     if (e < 0 && f.has_reference) e = (f.tip() - f.reference).norm();
+    s.error_from_path = e < 0;
     if (e < 0 && source.metadata().path.size() >= 2) e = distance_to_polyline(source.metadata().path, f.tip());
     s.has_error = e >= 0;
     s.error.push_back(std::max(e, 0.0));
+    s.has_feed = f.has_feed;
+    s.feed_force.push_back(f.feed_force);
   }
   return s;
 }
@@ -242,9 +249,10 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir)) throw InputError(dir + ": cannot create the plots directory");
+  std::vector<const char*> names(std::begin(kRunPlotFiles), std::end(kRunPlotFiles));
+  if (source.header().find_channel(channel::kFeedForce) >= 0) names.push_back(kFeedPlotFile);
   // Refuse before drawing anything, so a refusal leaves the directory as it was.
-  for (const char* name : kRunPlotFiles)
-    check_replaceable_output((fs::path(dir) / name).string(), force, source.run_files());
+  for (const char* name : names) check_replaceable_output((fs::path(dir) / name).string(), force, source.run_files());
   frames.last = std::min(frames.last, source.frame_count() - 1);
   if (frames.first > frames.last) throw InputError(dir + ": no logged frame to plot");
   const Series s = collect(source, frames);
@@ -253,10 +261,11 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   Canvas c(width, height);
   const int font = std::max(10, static_cast<int>(std::lround(height / 44.0)));
   const Rgba white = hex(0xFFFFFF);
-  double max_act = 0, max_con = 0;
+  double max_act = 0, max_con = 0, max_feed = 0;
   for (const auto& f : s.actuation) max_act = std::max(max_act, f.norm());
   for (double f : s.max_contact) max_con = std::max(max_con, f);
-  const DisplayUnit fu = force_unit(std::max(max_act, max_con));
+  for (double f : s.feed_force) max_feed = std::max(max_feed, std::abs(f));
+  const DisplayUnit fu = force_unit(std::max({max_act, max_con, max_feed}));
   const std::string force_label = std::string("force (") + fu.name + ")";
   const double to_mm = 1e3;
   // The plots of a run that failed, was stopped or was killed say so in their top margin, as its
@@ -415,7 +424,10 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     fit_range(e, a.ymin, a.ymax, true);
     draw_grid(c, a);
     if (s.has_error) plot_line(c, a, s.t, e, 2.5f, kPath);
-    draw_frame(c, a, "time (s)", "tip error (mm)", "Tracking error: distance from tip to reference", white);
+    // Without a target (nothing steers the tip) the error is measured from the path, and says so.
+    draw_frame(c, a, "time (s)", s.error_from_path ? "distance from path (mm)" : "tip error (mm)",
+               s.error_from_path ? "Distance from tip to reference path" : "Tracking error: distance from tip to reference",
+               white);
     if (!s.has_error) no_data(c, a, "tracking error", font);
     finish("tracking_error.png");
   }
@@ -440,6 +452,19 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     else
       no_data(c, a, "contact force", font);
     finish("contact_force.png");
+  }
+  if (s.has_feed) {  // The drive's push on the rod over time (negative: pulling it back).
+    c.clear(white);
+    Axes a = plot_area(c);
+    a.xmin = s.t.front();
+    a.xmax = s.t.back() > s.t.front() ? s.t.back() : s.t.front() + 1;
+    std::vector<double> feed;
+    for (double f : s.feed_force) feed.push_back(f * fu.factor);
+    fit_range(feed, a.ymin, a.ymax, true);
+    draw_grid(c, a);
+    plot_line(c, a, s.t, feed, 2.5f, kFeed);
+    draw_frame(c, a, "time (s)", "feed " + force_label, "Feed: the drive's push on the rod along the inlet", white);
+    finish(kFeedPlotFile);
   }
   return written;
 }

@@ -44,7 +44,8 @@ void check_outputs_apart(const RenderOptions& o) {
   const fs::path video = resolved(o.mp4_path);
   const std::string name = video.filename().string();
   const bool a_frame = is_rendered_frame_name(name);
-  const bool a_plot = std::find(std::begin(kRunPlotFiles), std::end(kRunPlotFiles), name) != std::end(kRunPlotFiles);
+  const bool a_plot =
+      std::find(std::begin(kRunPlotFiles), std::end(kRunPlotFiles), name) != std::end(kRunPlotFiles) || name == kFeedPlotFile;
   for (const auto& [dir, option, one_of_its_files] : {std::tuple{o.png_dir, "--png-dir", a_frame}, std::tuple{o.plots_dir, "--plots", a_plot}}) {
     if (dir.empty()) continue;
     const fs::path written_to = resolved(dir);

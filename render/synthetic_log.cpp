@@ -80,6 +80,10 @@ void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec, 
     h.channels.push_back({channel::kTipReference, "m", ChannelLayout::kVector, 2});
     h.channels.push_back({channel::kTipError, "m", ChannelLayout::kScalars, 1});
   }
+  if (spec.feed) {
+    h.channels.push_back({channel::kFeedForce, "N", ChannelLayout::kScalars, 1});
+    h.channels.push_back({channel::kFeedLength, "m", ChannelLayout::kScalars, 1});
+  }
   h.metadata = write_log_metadata(m);
   FrameLogWriter writer(path, h);
 
@@ -124,6 +128,10 @@ void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec, 
       values.push_back(ref.x());
       values.push_back(ref.y());
       values.push_back((tip - ref).norm());
+    }
+    if (spec.feed) {
+      values.push_back(spec.feed_force * (spec.duration > 0 ? t / spec.duration : 1.0));
+      values.push_back(spec.speed * t);
     }
     writer.append(t, values);
   }

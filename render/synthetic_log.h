@@ -26,6 +26,10 @@ struct SyntheticLogSpec {
   std::vector<int> contact_nodes = {10, 20};  // node indices (0 = base) that touch a wall
   bool forces = true;            // write force/actuation and force/contact
   bool reference = true;         // write tip/reference and tip/error
+  // Write feed/force and feed/length (control.advance): the root fed at `speed`, the drive's push
+  // rising linearly from 0 to `feed_force` at the last frame.
+  bool feed = false;
+  double feed_force = 5e-3;      // N
   std::string title = "synthetic serpentine maze";
 };
 

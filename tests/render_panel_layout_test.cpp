@@ -34,12 +34,20 @@ TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
   const std::string failed = testing::make_run(dir, SyntheticLogSpec{}, "failed");
   testing::write_bytes(failed + "/summary.json",
                        R"({"ok": false, "failure": "Newton did not converge", "frames": 10, "simulated_time": 1.04})");
+  // A fed run's HUD has two rows more (the feed's push and length).
+  SyntheticLogSpec fed_spec;
+  fed_spec.feed = true;
+  const std::string fed = testing::make_run(dir, fed_spec, "fed");
+  const auto hud_rows = [&](const std::string& path) { return path == failed ? 5u : path == fed ? 6u : 4u; };
+  const auto name = [&](const std::string& path) {
+    return path == failed ? " (failed run)" : path == fed ? " (fed run)" : "";
+  };
   const std::vector<std::pair<int, int>> sizes = {{1280, 720}, {640, 360}, {480, 270}, {320, 180}, {320, 240},
                                                   {640, 120}, {1200, 100}, {160, 120}, {240, 320}, {120, 90}};
-  for (const std::string& path : {run, failed})
+  for (const std::string& path : {run, failed, fed})
   for (const auto& [w, h] : sizes) {
     const auto items = panel_at(path, w, h);
-    const std::string size = std::to_string(w) + " x " + std::to_string(h) + (path == failed ? " (failed run)" : "");
+    const std::string size = std::to_string(w) + " x " + std::to_string(h) + name(path);
     ASSERT_FALSE(items.empty()) << size;
     EXPECT_STREQ(items.front().what, "hud") << size;
     for (std::size_t k = 0; k < items.size(); ++k) {
@@ -55,11 +63,11 @@ TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
   }
   // The HUD's labels and values never run into each other: a 200 x 600 portrait frame wrote
   // "Magnetic forc1.88 mN"; narrow cards shorten the labels, and drop them only when nothing fits.
-  for (const std::string& path : {run, failed})
+  for (const std::string& path : {run, failed, fed})
   for (const auto& [w, h] : std::vector<std::pair<int, int>>{{1280, 720}, {200, 600}, {120, 400}, {160, 120}, {60, 400}}) {
-    const std::string size = std::to_string(w) + " x " + std::to_string(h) + (path == failed ? " (failed run)" : "");
+    const std::string size = std::to_string(w) + " x " + std::to_string(h) + name(path);
     const auto hud = testing::paint_last_frame(path, w, h).hud;
-    ASSERT_EQ(hud.size(), path == failed ? 5u : 4u) << size;
+    ASSERT_EQ(hud.size(), hud_rows(path)) << size;
     for (const auto& field : hud) {
       EXPECT_GE(field.value_left, 0.0f) << size;
       if (*field.label) {
@@ -81,6 +89,38 @@ TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
   EXPECT_GE(count(thumbnail, "legend"), 2u);
   EXPECT_LT(count(thumbnail, "legend"), 6u);
   EXPECT_EQ(count(thumbnail, "scale bar"), 1u);
+}
+
+// The HUD shows what the log records: a catheter only pushed from its root (control.mode
+// "none") showed a "Tip error" of 95 mm to a target nothing followed and a magnetic force of
+// zero, and not the drive's push; a free rod's showed three rows of "n/a".
+TEST(RenderPanelLayout, TheHudShowsWhatTheLogRecords) {
+  ScratchDir dir("panel_hud_rows");
+  const auto hud_of = [&](const SyntheticLogSpec& spec, const std::string& name) {
+    const auto fields = testing::paint_last_frame(testing::make_run(dir, spec, name), 1280, 720).hud;
+    std::vector<std::string> rows;
+    for (const auto& field : fields) rows.push_back(std::string(field.label) + ": " + field.value);
+    return rows;
+  };
+  using Rows = std::vector<std::string>;
+  SyntheticLogSpec steered;  // the synthetic tip moves 20 mm in the 1 s of the log
+  EXPECT_EQ(hud_of(steered, "steered"),
+            (Rows{"Time: 1.000 s", "Tip error: 2.00 mm", "Magnetic force: 2.00 mN", "Max contact: 1.00 mN"}));
+  SyntheticLogSpec steered_and_fed = steered;
+  steered_and_fed.feed = true;  // the push rises to 5 mN at the last frame; the root is fed at the tip's speed
+  EXPECT_EQ(hud_of(steered_and_fed, "steered_and_fed"),
+            (Rows{"Time: 1.000 s", "Tip error: 2.00 mm", "Magnetic force: 2.00 mN", "Feed force: 5.00 mN",
+                  "Fed length: 20.0 mm", "Max contact: 1.00 mN"}));
+  SyntheticLogSpec pushed = steered_and_fed;
+  pushed.reference = false;
+  pushed.forces = false;
+  EXPECT_EQ(hud_of(pushed, "pushed"), (Rows{"Time: 1.000 s", "Feed force: 5.00 mN", "Fed length: 20.0 mm"}));
+  SyntheticLogSpec pulled = pushed;
+  pulled.feed_force = -3e-3;
+  EXPECT_EQ(hud_of(pulled, "pulled"), (Rows{"Time: 1.000 s", "Feed force: -3.00 mN", "Fed length: 20.0 mm"}));
+  SyntheticLogSpec free_rod = pushed;
+  free_rod.feed = false;
+  EXPECT_EQ(hud_of(free_rod, "free_rod"), (Rows{"Time: 1.000 s"}));
 }
 
 // The legend explains what the map draws, and nothing else: a free rod's run (no path, start or

@@ -105,8 +105,8 @@ class Progress {
 void remove_run_outputs(const std::string& dir) {
   std::error_code ec;
   for (const char* name : {"summary.json", "frames.vlog", "video.mp4", "video.webm"}) fs::remove(fs::path(dir) / name, ec);
-  for (const char* name : kRunPlotFiles)
-    fs::remove(fs::path(dir) / "plots" / name, ec);
+  for (const char* name : kRunPlotFiles) fs::remove(fs::path(dir) / "plots" / name, ec);
+  fs::remove(fs::path(dir) / "plots" / kFeedPlotFile, ec);
   std::vector<std::string> kept;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();

@@ -7,5 +7,7 @@ namespace vascsim {
 
 inline constexpr const char* kRunPlotFiles[] = {"tip_trajectory.png", "actuation_force.png", "snapshots.png",
                                                 "tracking_error.png", "contact_force.png"};
+// Drawn besides those for a run whose rod is fed through the inlet (control.advance).
+inline constexpr const char* kFeedPlotFile = "feed_force.png";
 
 }  // namespace vascsim
