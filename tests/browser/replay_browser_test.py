@@ -857,13 +857,14 @@ def log_layout(path):
     return (at + 7) // 8 * 8, 8 * doubles
 
 
-def start_long_run(exe, workdir, name):
+def start_long_run(exe, workdir, name, **sections):
     """`vascsim run` of a scene that outlasts the test (fixed 10 us steps on a free rod, a frame
-    every 10 ms: tests/cli_test_support.h's kLongRunScene) into WORKDIR/NAME, once its log exists."""
-    scene = os.path.join(workdir, 'long.json')
+    every 10 ms: tests/cli_test_support.h's kLongRunScene, with SECTIONS added) into
+    WORKDIR/NAME, once its log exists."""
+    scene = os.path.join(workdir, name + '.json')
     with open(scene, 'w') as f:
         json.dump({'maze': None, 'rod': {'nodes': 40}, 'solver': {'dt': 1e-5},
-                   'run': {'duration': 1000, 'output_interval': 0.01}}, f)
+                   'run': {'duration': 1000, 'output_interval': 0.01}, **sections}, f)
     run = os.path.join(workdir, name)
     proc = subprocess.Popen([exe, 'run', scene, '--out', run, '--quiet'], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     deadline = time.time() + 30
@@ -875,7 +876,8 @@ def start_long_run(exe, workdir, name):
 def check_stopped_run(driver, exe, shots, workdir):
     """A run stopped by Ctrl-C reads as stopped, not failed: the summary's result, the note under
     it (which goes to the last frame) and the timeline's mark say so."""
-    run, proc = start_long_run(exe, workdir, 'stopped')
+    # Gravity of zero logs force/external, flat zero: the plot checked below.
+    run, proc = start_long_run(exe, workdir, 'stopped', loads={'gravity': {'enabled': True, 'acceleration': [0, 0]}})
     time.sleep(0.3)
     proc.send_signal(signal.SIGINT)
     _, err = proc.communicate(timeout=60)
@@ -893,6 +895,18 @@ def check_stopped_run(driver, exe, shots, workdir):
         marks = page.d.find_elements(By.CSS_SELECTOR, '.event-mark.failure')
         R.check(len(marks) == 1 and marks[0].get_attribute('title').startswith('run stopped by SIGINT (Ctrl-C) at t = '),
                 'stopped run: the timeline marks where it was stopped', repr([m.get_attribute('title') for m in marks]))
+        # A force that is zero throughout is plotted on an axis of a readable unit range (a flat
+        # zero read "0.000001" beside the zero).
+        from selenium.webdriver.support.ui import Select
+        Select(page.d.find_element(By.ID, 'plot-channel')).select_by_value('force/external')
+        Select(page.d.find_element(By.ID, 'plot-reduce')).select_by_value('max')
+        page.d.find_element(By.ID, 'plot-add').click()
+        ticks = page.wait(lambda d: d.execute_script(
+            'for (const c of document.querySelectorAll("#plot-list canvas"))'
+            ' if ((c.getAttribute("aria-label") || "").startsWith("force/external") && c.dataset.yTicks) return c.dataset.yTicks;'
+            ' return false;'), 'the force/external plot to draw its axis').split()
+        R.check(len(ticks) >= 2 and float(ticks[-1]) >= 0.5 and all(len(t.partition('.')[2]) <= 1 for t in ticks),
+                'stopped run: a flat zero is plotted on an axis of one display unit', repr(ticks))
         page.shot(shots, 'stopped.png')
         page.collect_log()
         R.check(not page.severe, 'no JS errors in the browser log (stopped run)', '; '.join(page.severe[:5]))
@@ -978,14 +992,18 @@ def check_warnings(driver, exe, shots, workdir):
                 'warnings: the summary panel lists the warnings vascsim run printed', f'{texts} vs {printed}')
         marks = page.d.find_elements(By.CSS_SELECTOR, '.event-mark.warning')
         R.check(len(marks) == len(printed), 'warnings: each is marked on the timeline', f'{len(marks)} marks')
-        # The run has no tip actuation: its magnetic force plot is flat zero, on an axis of a
-        # readable unit range (it read "0.000001" beside the zero).
-        ticks = page.wait(lambda d: d.execute_script(
-            'for (const c of document.querySelectorAll("#plot-list canvas"))'
-            ' if ((c.getAttribute("aria-label") || "").startsWith("magnetic force") && c.dataset.yTicks) return c.dataset.yTicks;'
-            ' return false;'), 'the magnetic force plot to draw its axis').split()
-        R.check(len(ticks) >= 2 and float(ticks[-1]) >= 0.5 and all(len(t.partition('.')[2]) <= 1 for t in ticks),
-                'warnings: a flat zero force is plotted on an axis of one display unit', repr(ticks))
+        # The rod is only pushed from its root (control.mode "none"): the page shows the drive's
+        # push, not a tip error or magnetic force nothing made (a flat zero and a distance to a
+        # target the tip did not follow).
+        labels = page.wait(lambda d: d.execute_script(
+            'const l = [...document.querySelectorAll("#plot-list canvas")].map((c) => c.getAttribute("aria-label") || "");'
+            ' return l.some((x) => x.startsWith("feed force")) && l;'), 'the feed force plot')
+        R.check(not any(l.startswith(('tip error', 'magnetic force')) for l in labels),
+                'warnings: a rod only pushed from its root has a feed force plot and no tip error or magnetic plot',
+                repr(labels))
+        rows = [th.text for th in page.d.find_elements(By.CSS_SELECTOR, '#summary tbody th')]
+        R.check({'feed max', 'fed length'} <= set(rows) and not {'tip error RMS', 'magnetic max'} & set(rows),
+                'warnings: its summary gives the feed\'s push and length, no tip error or magnetic maximum', repr(rows))
         # The squashed rod's note goes to the first frame it was squashed in (summary.json).
         squashed = [n for n in notes if 'stretched or squashed' in n.text]
         want = summary['large_axial_strain']['first_time']

@@ -935,6 +935,7 @@
     });
     if (channelInfo('tip/error')) addPlot('tip/error', '', 'tip error', false);
     if (channelInfo('force/actuation')) addPlot('force/actuation', 'sum', 'magnetic force', false);
+    if (channelInfo('feed/force')) addPlot('feed/force', '', 'feed force', false);
     if (channelInfo('force/contact')) addPlot('force/contact', 'max', 'largest contact force', false);
     $('plot-legend').innerHTML = S.compare
       ? `<span><i style="background:${RUN_COLOURS.a}"></i>A ${esc(S.info.a.path)}</span><span><i style="background:${RUN_COLOURS.b}"></i>B ${esc(S.info.b.path)}</span>`
@@ -1169,10 +1170,12 @@
         if (!s || n.goal_reached === undefined || n.goal_reached === null) return ['–', ''];
         return n.goal_reached ? [sec(n.goal_time), 'ok'] : ['no', 'bad'];
       }],
-      ['tip error RMS', (s) => [mm(nav(s).tip_error_rms), '']],
-      ['tip error max', (s) => [mm(nav(s).tip_error_max), '']],
+      ['tip error RMS', (s) => [mm(nav(s).tip_error_rms), ''], 'steer'],
+      ['tip error max', (s) => [mm(nav(s).tip_error_max), ''], 'steer'],
       ['contact max', (s) => [mN(nav(s).contact_force_max), '']],
-      ['magnetic max', (s) => [mN(nav(s).actuation_force_max), '']],
+      ['magnetic max', (s) => [mN(nav(s).actuation_force_max), ''], 'steer'],
+      ['feed max', (s) => [mN((nav(s).advance || {}).feed_force_max), ''], 'feed'],
+      ['fed length', (s) => [mm((nav(s).advance || {}).fed_length), ''], 'feed'],
       ['simulated', (s) => [s ? sec(s.simulated_time) : '–', '']],
       ['wall time', (s) => [s ? sec(s.wall_time) : '–', '']],
       ['real-time factor', (s) => [s && s.real_time_factor ? `${fmtSig(s.real_time_factor, 3)}×` : '–', '']],
@@ -1181,7 +1184,16 @@
     let html = '<table class="summary-table"><thead><tr><th></th>' +
       (cols.length > 1 ? cols.map((r) => `<th style="color:var(--run-${r})">${r.toUpperCase()}</th>`).join('') : '') +
       '</tr></thead><tbody>';
-    for (const [name, f] of rows) {
+    // Rows only where a run has them: the feed's for a run whose root is fed; the tip's tracking
+    // and magnetic force unless every run is only pushed from its root (nothing steers its tip:
+    // its log has no tip error, and its summary's is against a target nothing followed).
+    const logs = (r, name) => (S.info[r].channels || []).some((c) => c.name === name);
+    const shown = {
+      feed: sums.some((s) => nav(s).advance),
+      steer: !cols.every((r) => logs(r, 'feed/force') && !logs(r, 'tip/error')),
+    };
+    for (const [name, f, only] of rows) {
+      if (only && !shown[only]) continue;
       html += `<tr><th>${name}</th>`;
       for (let i = 0; i < cols.length; i++) {
         const [text, cls] = f(sums[i]);
