@@ -292,6 +292,10 @@ def check_load(page, shots):
     p = page.frame_params()
     R.check(img[0] == int(p['width']) and img[1] == int(p['height']) and int(p['width']) % 2 == 0 and int(p['height']) % 2 == 0,
             'the map shows a frame of the requested (even) size', f'image {img}, request {p.get("width")}x{p.get("height")}')
+    rows = page.wait(lambda d: [th.text for th in d.find_elements(By.CSS_SELECTOR, '#summary tbody th')], 'the summary')
+    R.check({'goal reached at', 'tip error RMS', 'tip error max', 'contact max', 'magnetic max'} <= set(rows)
+            and not {'feed max', 'fed length'} & set(rows),
+            'a steered run\'s summary has its navigation rows and no feed rows', repr(rows))
     page.shot(shots, 'single.png')
 
 
@@ -889,6 +893,9 @@ def check_stopped_run(driver, exe, shots, workdir):
         page.open(page.api.page)
         result = page.wait(lambda d: d.find_elements(By.CSS_SELECTOR, '#summary td[data-key="result"]'), 'the summary')
         R.check(result[0].text == 'stopped', 'stopped run: the summary\'s result reads "stopped"', repr(result[0].text))
+        rows = [th.text for th in page.d.find_elements(By.CSS_SELECTOR, '#summary tbody th')]
+        R.check('simulated' in rows and not {'goal reached at', 'tip error RMS', 'contact max', 'magnetic max'} & set(rows),
+                'stopped run: a free rod\'s summary has no navigation rows (they were all "–")', repr(rows))
         notes = page.d.find_elements(By.CSS_SELECTOR, '#summary .failure-note')
         R.check(len(notes) == 1 and notes[0].text.startswith('stopped by SIGINT (Ctrl-C) at t = '),
                 'stopped run: the note under the summary says who stopped it', repr([n.text for n in notes]))

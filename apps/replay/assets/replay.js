@@ -1169,10 +1169,10 @@
         const n = nav(s);
         if (!s || n.goal_reached === undefined || n.goal_reached === null) return ['–', ''];
         return n.goal_reached ? [sec(n.goal_time), 'ok'] : ['no', 'bad'];
-      }],
+      }, 'nav'],
       ['tip error RMS', (s) => [mm(nav(s).tip_error_rms), ''], 'steer'],
       ['tip error max', (s) => [mm(nav(s).tip_error_max), ''], 'steer'],
-      ['contact max', (s) => [mN(nav(s).contact_force_max), '']],
+      ['contact max', (s) => [mN(nav(s).contact_force_max), ''], 'nav'],
       ['magnetic max', (s) => [mN(nav(s).actuation_force_max), ''], 'steer'],
       ['feed max', (s) => [mN((nav(s).advance || {}).feed_force_max), ''], 'feed'],
       ['fed length', (s) => [mm((nav(s).advance || {}).fed_length), ''], 'feed'],
@@ -1184,14 +1184,16 @@
     let html = '<table class="summary-table"><thead><tr><th></th>' +
       (cols.length > 1 ? cols.map((r) => `<th style="color:var(--run-${r})">${r.toUpperCase()}</th>`).join('') : '') +
       '</tr></thead><tbody>';
-    // Rows only where a run has them: the feed's for a run whose root is fed; the tip's tracking
-    // and magnetic force unless every run is only pushed from its root (nothing steers its tip:
-    // its log has no tip error, and its summary's is against a target nothing followed).
+    // Rows only where a run has them: the navigation's for a run in vessels (not a free rod's);
+    // the feed's for a run whose root is fed; the tip's tracking and magnetic force unless every
+    // run is only pushed from its root (nothing steers its tip: its log has no tip error, and
+    // its summary's is against a target nothing followed).
     const logs = (r, name) => (S.info[r].channels || []).some((c) => c.name === name);
     const shown = {
+      nav: sums.some((s) => s && s.navigation),
       feed: sums.some((s) => nav(s).advance),
-      steer: !cols.every((r) => logs(r, 'feed/force') && !logs(r, 'tip/error')),
     };
+    shown.steer = shown.nav && !cols.every((r) => logs(r, 'feed/force') && !logs(r, 'tip/error'));
     for (const [name, f, only] of rows) {
       if (only && !shown[only]) continue;
       html += `<tr><th>${name}</th>`;
