@@ -1,8 +1,9 @@
 // Draws one frame of a run on a canvas: the vessel lumen and walls, the reference path, start
 // and goal, the tip trail, the rod at its true radius, node markers, force arrows, and a panel
-// with the HUD (time and what the log records of tip error, forces and feed), the legend and a scale bar; each is a layer of the
-// View and drawn only when on. Pure drawing: it reads a FrameState and the log metadata, and
-// holds only the view, the arrow scales and which runs failed, fixed for a whole video.
+// with the HUD (time, and what the log records of tip error, forces and feed), the legend and a
+// scale bar; each is a layer of the View and drawn only when on. Pure drawing: it reads a
+// FrameState and the log metadata, and holds only the view, the arrow scales and which runs
+// failed, fixed for a whole video.
 #pragma once
 
 #include <optional>

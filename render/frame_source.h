@@ -108,6 +108,8 @@ class FrameSource {
   // written over in place): this source's frames are no longer the run's.
   bool replaced() const { return reader_.replaced() || reader_.frame_count() < frame_count_; }
   const FrameLogHeader& header() const { return reader_.header(); }
+  // The log has the feed's push and length (control.advance): FrameState::has_feed.
+  bool has_feed() const { return feed_force_ >= 0; }
 
  private:
   void unpack(const std::vector<double>& record, FrameState& out) const;

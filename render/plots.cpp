@@ -14,7 +14,6 @@
 #include "render/png_writer.h"
 #include "sim/io/output_file.h"
 #include "sim/io/run_files.h"
-#include "sim/log/channel_names.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim::render {
@@ -72,8 +71,8 @@ Series collect(const FrameSource& source, FrameRange frames) {
     // Tracking error: the logged value, else the distance to the controller's target, else to the path.
     double e = f.tip_error;
     if (e < 0 && f.has_reference) e = (f.tip() - f.reference).norm();
-    s.error_from_path = e < 0;
-    if (e < 0 && source.metadata().path.size() >= 2) e = distance_to_polyline(source.metadata().path, f.tip());
+    s.error_from_path = e < 0 && source.metadata().path.size() >= 2;
+    if (s.error_from_path) e = distance_to_polyline(source.metadata().path, f.tip());
     s.has_error = e >= 0;
     s.error.push_back(std::max(e, 0.0));
     s.has_feed = f.has_feed;
@@ -250,7 +249,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir)) throw InputError(dir + ": cannot create the plots directory");
   std::vector<const char*> names(std::begin(kRunPlotFiles), std::end(kRunPlotFiles));
-  if (source.header().find_channel(channel::kFeedForce) >= 0) names.push_back(kFeedPlotFile);
+  if (source.has_feed()) names.push_back(kFeedPlotFile);
   // Refuse before drawing anything, so a refusal leaves the directory as it was.
   for (const char* name : names) check_replaceable_output((fs::path(dir) / name).string(), force, source.run_files());
   frames.last = std::min(frames.last, source.frame_count() - 1);
