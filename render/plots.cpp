@@ -90,6 +90,14 @@ Axes plot_area(const Canvas& c) {
   return a;
 }
 
+// The axes of a plot against time, spanning the series' times (1 s from a single frame's).
+Axes time_axes(const Canvas& c, const Series& s) {
+  Axes a = plot_area(c);
+  a.xmin = s.t.front();
+  a.xmax = s.t.back() > s.t.front() ? s.t.back() : s.t.front() + 1;
+  return a;
+}
+
 void fit_range(const std::vector<double>& v, double& lo, double& hi, bool include_zero) {
   lo = std::numeric_limits<double>::infinity();
   hi = -lo;
@@ -317,9 +325,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   }
   {  // Actuation force over time (Fig. 12).
     c.clear(white);
-    Axes a = plot_area(c);
-    a.xmin = s.t.front();
-    a.xmax = s.t.back() > s.t.front() ? s.t.back() : s.t.front() + 1;
+    Axes a = time_axes(c, s);
     std::vector<double> mag, fx, fy;
     for (const auto& f : s.actuation) mag.push_back(f.norm() * fu.factor), fx.push_back(f.x() * fu.factor), fy.push_back(f.y() * fu.factor);
     std::vector<double> all = mag;
@@ -415,9 +421,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   }
   {  // Tracking error over time.
     c.clear(white);
-    Axes a = plot_area(c);
-    a.xmin = s.t.front();
-    a.xmax = s.t.back() > s.t.front() ? s.t.back() : s.t.front() + 1;
+    Axes a = time_axes(c, s);
     std::vector<double> e;
     for (double v : s.error) e.push_back(v * to_mm);
     fit_range(e, a.ymin, a.ymax, true);
@@ -432,9 +436,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   }
   {  // Contact force over time.
     c.clear(white);
-    Axes a = plot_area(c);
-    a.xmin = s.t.front();
-    a.xmax = s.t.back() > s.t.front() ? s.t.back() : s.t.front() + 1;
+    Axes a = time_axes(c, s);
     std::vector<double> mx, tot;
     for (std::size_t i = 0; i < s.t.size(); ++i) mx.push_back(s.max_contact[i] * fu.factor), tot.push_back(s.total_contact[i] * fu.factor);
     std::vector<double> all = mx;
@@ -454,9 +456,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   }
   if (s.has_feed) {  // The drive's push on the rod over time (negative: pulling it back).
     c.clear(white);
-    Axes a = plot_area(c);
-    a.xmin = s.t.front();
-    a.xmax = s.t.back() > s.t.front() ? s.t.back() : s.t.front() + 1;
+    Axes a = time_axes(c, s);
     std::vector<double> feed;
     for (double f : s.feed_force) feed.push_back(f * fu.factor);
     fit_range(feed, a.ymin, a.ymax, true);
