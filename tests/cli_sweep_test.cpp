@@ -41,7 +41,8 @@ TEST(SweepCli, RunsEveryEntryInItsOwnDirectoryAndMerges) {
   EXPECT_EQ(parse_csv(csv).size(), 9u);
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "index,id,repeat,/control/kp,/maze/seed,status,goal_reached,goal_time_s,tip_error_rms_m,tip_error_max_m,"
-            "actuation_force_max_N,contact_force_max_N,max_penetration_m,steps,newton_iterations,rejected_steps,failure,"
+            "actuation_force_max_N,contact_force_max_N,feed_force_max_N,max_penetration_m,steps,newton_iterations,"
+            "rejected_steps,failure,"
             "wall_time_s,real_time_factor,process_time_s,cpu_time_s,host");
   EXPECT_EQ(csv_cell(csv, 5, "/control/kp"), "4");
   EXPECT_EQ(csv_cell(csv, 5, "/maze/seed"), "2");
@@ -61,6 +62,8 @@ TEST(SweepCli, RunsEveryEntryInItsOwnDirectoryAndMerges) {
   // The summary table: one line per axis value.
   EXPECT_TRUE(has(r.output, "sweep kp (")) << r.output;
   EXPECT_TRUE(has(r.output, "8 runs: 8 done, 0 failed, 0 missing")) << r.output;
+  EXPECT_TRUE(has(r.output, "tip error RMS (mm)") && !has(r.output, "feed")) << "steered runs, none fed:\n" << r.output;
+  EXPECT_EQ(csv_cell(csv, 0, "feed_force_max_N"), "") << "a run whose root is not fed has no feed force";
 
   // The same sweep again, elsewhere: the same table but for the timing columns, byte for byte.
   const CommandResult again = sweep_command(sweep + " --out " + dir + "/again --jobs 1 --quiet");
@@ -77,6 +80,37 @@ TEST(SweepCli, RunsEveryEntryInItsOwnDirectoryAndMerges) {
   ASSERT_EQ(tables_only.exit_code, 0) << tables_only.output;
   for (const char* f : {"plots/control_kp.png", "plots/maze_seed.png"}) EXPECT_FALSE(fs::exists(dir + "/out/" + f)) << f;
 #endif
+}
+
+// A sweep of runs only pushed from their root (scenes/coil_chamber.json, control.mode "none")
+// tabulates the drive's push and not a tip error nothing steered; one that also steers shows both.
+TEST(SweepCli, ASweepOfRunsPushedFromTheirRootTabulatesTheDrivesPush) {
+  const std::string dir = fresh_temp_dir("sweep_fed");
+  const auto write_sweep = [&](const std::string& name, const std::string& axes) {
+    const std::string path = dir + "/" + name + ".json";
+    write_text(path, R"({"format": "vascsim-sweep/1", "scene": ")" + source_path("scenes/coil_chamber.json") +
+                         R"(", "axes": )" + axes + R"(, "overrides": {"/run/duration": 0.2}})" + "\n");
+    return path;
+  };
+  const CommandResult pushed =
+      sweep_command(write_sweep("speed", R"({"/control/advance/speed": [0.02, 0.05]})") + " --out " + dir + "/speed");
+  ASSERT_EQ(pushed.exit_code, 0) << pushed.output;
+  EXPECT_TRUE(has(pushed.output, "feed force max (mN)") && !has(pushed.output, "tip error")) << pushed.output;
+  const std::string csv = read_text(dir + "/speed/results.csv");
+  for (std::size_t i = 0; i < 2; ++i) {
+    const nlohmann::json summary =
+        nlohmann::json::parse(read_text(dir + "/speed/runs/000" + std::to_string(i) + "/summary.json"));
+    EXPECT_EQ(summary["navigation"]["control_mode"], "none");
+    EXPECT_EQ(std::stod(csv_cell(csv, i, "feed_force_max_N")),
+              summary["navigation"]["advance"]["feed_force_max"].get<double>()) << i;
+  }
+  EXPECT_GT(std::stod(csv_cell(csv, 1, "feed_force_max_N")), std::stod(csv_cell(csv, 0, "feed_force_max_N")))
+      << "pushed faster against the blood's drag, the drive pushes harder";
+
+  const CommandResult mixed =
+      sweep_command(write_sweep("mode", R"({"/control/mode": ["none", "force"]})") + " --out " + dir + "/mode");
+  ASSERT_EQ(mixed.exit_code, 0) << mixed.output;
+  EXPECT_TRUE(has(mixed.output, "tip error RMS (mm)") && has(mixed.output, "feed force max (mN)")) << mixed.output;
 }
 
 TEST(SweepCli, ResumesSkippingCompletedRunsAndRerunsOnlyWhatIsMissing) {

@@ -38,7 +38,7 @@ TEST(SweepSummaryTable, ShowsLongPointersObjectValuesAndWideFiguresWhole) {
               o[0].metrics[kGoalReached] = 1;
   o[1].status = "done", o[1].metrics[kTipErrorRms] = 0.002;
   // o[2] is missing.
-  const std::string table = summary_table(m, o, true);
+  const std::string table = summary_table(m, o, SweepKind{true, true, false});
   const auto lines = lines_of(table);
   ASSERT_GE(lines.size(), 7u) << table;
   EXPECT_EQ(table.find("..."), std::string::npos) << "a cell was cut:\n" << table;

@@ -114,33 +114,45 @@ render::SweepFigure figure_of(const SweepManifest& m, const std::vector<RunOutco
 
 }  // namespace
 
-bool sweep_navigates(const SweepDirectory& sweep, const std::vector<RunOutcome>& outcomes) {
+SweepKind sweep_kind(const SweepDirectory& sweep, const std::vector<RunOutcome>& outcomes) {
+  SweepKind kind;
   bool any_done = false;
   for (const auto& o : outcomes) {
-    if (std::isfinite(o.metrics[kTipErrorRms])) return true;
     any_done = any_done || o.status == "done";
+    if (!std::isfinite(o.metrics[kTipErrorRms])) continue;  // no navigation figures
+    kind.navigation = true;
+    // A summary that does not say (written before control_mode was) is of a steered run.
+    kind.steered = kind.steered || o.control_mode != "none";
+    kind.fed = kind.fed || std::isfinite(o.metrics[kFeedForceMax]);
   }
   // Before any run has figures, the scene says which columns the table will fill (a merge
   // before the runs showed the free-space ones for a maze sweep).
-  if (any_done || sweep.manifest.runs.empty()) return false;
+  if (kind.navigation || any_done || sweep.manifest.runs.empty()) return kind;
   try {
-    return read_scene_file((fs::path(sweep.dir) / run_scene_path(sweep.manifest.runs.front().id)).string()).has_environment;
+    const Scene scene = read_scene_file((fs::path(sweep.dir) / run_scene_path(sweep.manifest.runs.front().id)).string());
+    kind.navigation = scene.has_environment;
+    kind.steered = kind.navigation && scene.control.mode != ActuationMode::kNone;
+    kind.fed = kind.navigation && scene.control.advance.enabled();
   } catch (const InputError&) {
-    return false;
   }
+  return kind;
 }
 
-std::vector<std::size_t> headline_metrics(bool navigation) {
-  if (navigation) return {kTipErrorRms, kTipErrorMax, kGoalTime, kMaxPenetration};
-  return {kSteps, kNewtonIterations, kRejectedSteps};
+std::vector<std::size_t> headline_metrics(const SweepKind& kind) {
+  if (!kind.navigation) return {kSteps, kNewtonIterations, kRejectedSteps};
+  std::vector<std::size_t> metrics;
+  if (kind.steered) metrics.insert(metrics.end(), {kTipErrorRms, kTipErrorMax});
+  if (kind.fed) metrics.push_back(kFeedForceMax);
+  metrics.insert(metrics.end(), {kGoalTime, kMaxPenetration});
+  return metrics;
 }
 
-std::string summary_table(const SweepManifest& m, const std::vector<RunOutcome>& outcomes, bool navigation) {
+std::string summary_table(const SweepManifest& m, const std::vector<RunOutcome>& outcomes, const SweepKind& kind) {
   // An axis value longer than this (a whole vessel network, say) is named "value K" in its row
   // and given in full below the table, so the columns stay readable.
   constexpr std::size_t kLongestValueCell = 32;
   const auto& all = sweep_metrics();
-  const std::vector<std::size_t> metrics = headline_metrics(navigation);
+  const std::vector<std::size_t> metrics = headline_metrics(kind);
   std::size_t done = 0, failed = 0, missing = 0;
   for (const auto& o : outcomes) done += o.status == "done", failed += o.status == "failed", missing += o.status == "missing";
   std::string out = "sweep " + m.name + " (" + m.scene + "): " + std::to_string(m.runs.size()) + " runs: " +
@@ -148,7 +160,7 @@ std::string summary_table(const SweepManifest& m, const std::vector<RunOutcome>&
                     " missing\n";
   for (const auto& axis : summarise_sweep(m, outcomes)) {
     std::vector<std::string> header = {axis.pointer, "runs", "failed", "missing"}, units = {"", "", "", ""};
-    if (navigation) header.push_back("goal"), units.push_back("");
+    if (kind.navigation) header.push_back("goal"), units.push_back("");
     for (std::size_t i : metrics) {
       header.push_back(std::string(all[i].label) + (*all[i].unit ? std::string(" (") + all[i].unit + ")" : ""));
       units.push_back("mean [min, max]");
@@ -165,7 +177,7 @@ std::string summary_table(const SweepManifest& m, const std::vector<RunOutcome>&
       std::vector<std::string> row = {value, std::to_string(v.runs), std::to_string(v.failed), std::to_string(v.missing)};
       // Goals of the completed runs, as the figures are ("0/3" for three missing runs read as
       // three runs that missed the goal).
-      if (navigation) row.push_back(v.done ? std::to_string(v.goal_reached) + "/" + std::to_string(v.done) : "-");
+      if (kind.navigation) row.push_back(v.done ? std::to_string(v.goal_reached) + "/" + std::to_string(v.done) : "-");
       for (std::size_t i : metrics)
         row.push_back(figure_text(v.mean[i] * all[i].scale) + " [" + figure_text(v.min[i] * all[i].scale) + ", " +
                       figure_text(v.max[i] * all[i].scale) + "]");
@@ -231,10 +243,10 @@ MergeReport merge_sweep(const SweepDirectory& sweep, bool force, bool plots) {
   write_file_atomically(csv, sweep_results_csv(m, outcomes));
   write_file_atomically(json, sweep_results_json(m, outcomes));
   report.written = {csv, json};
-  const bool navigation = sweep_navigates(sweep, outcomes);
+  const SweepKind kind = sweep_kind(sweep, outcomes);
 #ifdef VASCSIM_HAVE_RENDER
   if (drawing) {
-    const std::vector<std::size_t> metrics = headline_metrics(navigation);
+    const std::vector<std::size_t> metrics = headline_metrics(kind);
     for (std::size_t k = 0; k < m.axes.size(); ++k) {
       render::write_sweep_figure(figure_of(m, outcomes, k, metrics), figures[k], 1600, 1100);
       report.written.push_back(figures[k]);
@@ -243,7 +255,7 @@ MergeReport merge_sweep(const SweepDirectory& sweep, bool force, bool plots) {
 #else
   if (plots) report.note = "no plots: this build has no renderer (configure with -DVASCSIM_RENDER=ON)";
 #endif
-  report.table = summary_table(m, outcomes, navigation);
+  report.table = summary_table(m, outcomes, kind);
   return report;
 }
 

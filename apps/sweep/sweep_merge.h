@@ -27,12 +27,19 @@ MergeReport merge_sweep(const SweepDirectory& sweep, bool force, bool plots = tr
 // The files a merge writes (results.csv, results.json, the plots) that exist already: those a
 // merge without `force` would refuse to replace.
 std::vector<std::string> earlier_merge_outputs(const SweepDirectory& sweep);
-// Whether the sweep navigates: any run's figures say so or, while no run has completed, the first
-// run's scene does (it has a maze or vessels; an unreadable one does not).
-bool sweep_navigates(const SweepDirectory& sweep, const std::vector<RunOutcome>& outcomes);
-// The figures a table and the plots show: navigation figures for a sweep that navigates, else the
-// solver's counts (a sweep of free-space scenes).
-std::vector<std::size_t> headline_metrics(bool navigation);
-std::string summary_table(const SweepManifest& manifest, const std::vector<RunOutcome>& outcomes, bool navigation);
+// What a sweep's runs do, which decides the figures its table and plots show.
+struct SweepKind {
+  bool navigation = false;  // in a maze or vessels
+  bool steered = false;     // some run steers its tip (control.mode other than "none")
+  bool fed = false;         // some run's root is fed through the inlet (control.advance)
+};
+// From the runs' figures or, while no run has completed, the first run's scene (an unreadable
+// one: a free-space sweep).
+SweepKind sweep_kind(const SweepDirectory& sweep, const std::vector<RunOutcome>& outcomes);
+// The figures a table and the plots show: for a sweep that navigates, the tip error of a steered
+// one and the feed's push of a fed one, then the goal time and penetration; else the solver's
+// counts (a sweep of free-space scenes).
+std::vector<std::size_t> headline_metrics(const SweepKind& kind);
+std::string summary_table(const SweepManifest& manifest, const std::vector<RunOutcome>& outcomes, const SweepKind& kind);
 
 }  // namespace vascsim::sweep

@@ -7,9 +7,7 @@ namespace vascsim::io {
 
 using nlohmann::json;
 
-namespace {
-
-const char* mode_name(ActuationMode m) {
+const char* actuation_mode_name(ActuationMode m) {
   switch (m) {
     case ActuationMode::kNone: return "none";
     case ActuationMode::kKinematic: return "kinematic";
@@ -17,6 +15,8 @@ const char* mode_name(ActuationMode m) {
     default: return "force";
   }
 }
+
+namespace {
 
 const char* contact_name(ContactMode m) {
   switch (m) {
@@ -62,7 +62,7 @@ void read_advance(FieldReader& control, AdvanceSpec& out) {
 }  // namespace
 
 void read_control(FieldReader& in, ControlSpec& out) {
-  const std::string mode = in.choice("mode", mode_name(out.mode), {"none", "force", "kinematic", "field"});
+  const std::string mode = in.choice("mode", actuation_mode_name(out.mode), {"none", "force", "kinematic", "field"});
   out.mode = mode == "none"        ? ActuationMode::kNone
              : mode == "kinematic" ? ActuationMode::kKinematic
              : mode == "field"     ? ActuationMode::kField
@@ -105,7 +105,7 @@ void read_control(FieldReader& in, ControlSpec& out) {
 }
 
 json write_control(const ControlSpec& spec) {
-  json out = {{"mode", mode_name(spec.mode)},
+  json out = {{"mode", actuation_mode_name(spec.mode)},
           {"kp", spec.kp},
           {"kd", spec.kd},
           {"actuated_nodes", spec.actuated_nodes},

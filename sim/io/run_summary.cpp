@@ -6,6 +6,7 @@
 #include "sim/io/json_fields.h"
 #include "sim/io/provenance.h"
 #include "sim/io/scene_reader.h"
+#include "sim/io/scene_sections.h"
 
 namespace vascsim {
 
@@ -78,7 +79,8 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   if (run.navigation()) {
     json contact_time = json::array();
     for (double t : s.contact_time) contact_time.push_back(t);
-    j["navigation"] = {{"goal_reached", s.goal_reached},
+    j["navigation"] = {{"control_mode", io::actuation_mode_name(scene.control.mode)},
+                       {"goal_reached", s.goal_reached},
                        {"goal_time", number(s.goal_time)},
                        {"tip_error_rms", s.tip_error_rms},
                        {"tip_error_max", s.tip_error_max},

@@ -49,6 +49,8 @@ nlohmann::json write_path(const PathSpec& spec);
 nlohmann::json write_rod(const RodSpec& spec);
 nlohmann::json write_run(const RunSpec& spec);
 nlohmann::json write_control(const ControlSpec& spec);
+// control.mode as a scene file names it; summary.json's navigation.control_mode too.
+const char* actuation_mode_name(ActuationMode mode);
 nlohmann::json write_contact(const ContactSpec& spec);
 nlohmann::json write_shape(const ShapeSpec& spec);
 nlohmann::json write_boundary(const BoundarySpec& spec);

@@ -66,9 +66,11 @@ void read_summary(const json& s, const std::string& label, RunOutcome& out) {
   static const char* const pointers[kMetricCount] = {
       "/navigation/goal_reached",        "/navigation/goal_time",         "/navigation/tip_error_rms",
       "/navigation/tip_error_max",       "/navigation/actuation_force_max", "/navigation/contact_force_max",
-      "/navigation/max_penetration",     "/steps",                        "/newton_iterations/total",
-      "/rejected_steps"};
+      "/navigation/advance/feed_force_max", "/navigation/max_penetration", "/steps",
+      "/newton_iterations/total",        "/rejected_steps"};
   for (std::size_t k = 0; k < kMetricCount; ++k) out.metrics[k] = number_at(s, pointers[k]);
+  const json::json_pointer mode("/navigation/control_mode");
+  if (s.contains(mode) && s.at(mode).is_string()) out.control_mode = s.at(mode).get<std::string>();
   const double wall = number_at(s, "/wall_time"), rtf = number_at(s, "/real_time_factor");
   out.wall_time = std::isfinite(wall) ? wall : -1;
   out.real_time_factor = std::isfinite(rtf) ? rtf : -1;
@@ -100,6 +102,7 @@ const std::vector<SweepMetric>& sweep_metrics() {
       {"tip_error_max_m", "tip error max", "mm", 1e3},
       {"actuation_force_max_N", "actuation force max", "mN", 1e3},
       {"contact_force_max_N", "contact force max", "mN", 1e3},
+      {"feed_force_max_N", "feed force max", "mN", 1e3},
       {"max_penetration_m", "max penetration", "mm", 1e3},
       {"steps", "steps", "", 1.0, true},
       {"newton_iterations", "Newton iterations", "", 1.0, true},

@@ -29,8 +29,8 @@ struct SweepMetric {
 const std::vector<SweepMetric>& sweep_metrics();
 // Indices into sweep_metrics(), for the code that picks figures by meaning.
 enum SweepMetricIndex : std::size_t {
-  kGoalReached, kGoalTime, kTipErrorRms, kTipErrorMax, kActuationForceMax, kContactForceMax, kMaxPenetration,
-  kSteps, kNewtonIterations, kRejectedSteps, kMetricCount
+  kGoalReached, kGoalTime, kTipErrorRms, kTipErrorMax, kActuationForceMax, kContactForceMax, kFeedForceMax,
+  kMaxPenetration, kSteps, kNewtonIterations, kRejectedSteps, kMetricCount
 };
 
 struct RunStatusRecord {
@@ -45,6 +45,9 @@ struct RunOutcome {
   std::string status = "missing";  // "done", "failed" or "missing"
   std::string failure;             // why it failed (deterministic text; empty unless failed)
   std::vector<double> metrics;     // sweep_metrics() order; NaN where unknown
+  // How the tip was steered (summary.json's navigation.control_mode: "none" for a rod only pushed
+  // from its root); empty where the run does not navigate or its summary does not say.
+  std::string control_mode;
   // Timing: varies from run to run; kept apart (results.csv puts these columns last).
   double wall_time = -1;           // s, the simulation loop (summary.json wall_time), -1 unknown
   double real_time_factor = -1;    // simulated / wall time, -1 unknown
