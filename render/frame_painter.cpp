@@ -40,6 +40,11 @@ glm::vec2 apply(const glm::dmat3& m, Vec2 p) {
   return {static_cast<float>(q.x), static_cast<float>(q.y)};
 }
 
+bool has_bounds(const LogMetadata& meta) { return (meta.bounds.max - meta.bounds.min).minCoeff() > 0; }
+bool has_path(const LogMetadata& meta) { return meta.path.size() >= 2; }
+// A scene without navigation logs neither a path nor a start and goal apart.
+bool has_start_goal(const LogMetadata& meta) { return !meta.path.empty() || meta.start != meta.goal; }
+
 // Everything the fit camera must show: the environment's bounds, the lumen and every wall
 // including its thickness (a thick outer wall reaches beyond the bounds); without bounds, also
 // the path and rod.
@@ -52,8 +57,7 @@ Box2 world_box(const LogMetadata& meta, const FrameState& first) {
   for (const auto& w : meta.walls) grow(w.a, 0.5 * w.thickness), grow(w.b, 0.5 * w.thickness);
   for (const auto& ring : meta.lumen)
     for (const auto& p : ring) grow(p, 0.0);
-  const bool has_bounds = (meta.bounds.max - meta.bounds.min).minCoeff() > 0;
-  if (has_bounds) {
+  if (has_bounds(meta)) {
     grow(meta.bounds.min, 0.0), grow(meta.bounds.max, 0.0);
     return b;
   }
@@ -119,6 +123,22 @@ double typical_peak(std::vector<double> v) {
   return v[k];
 }
 
+LayerSet layers_with_content(const LogMetadata& metadata, const FrameLogHeader& header) {
+  const auto recorded = [&](const char* channel) { return header.find_channel(channel) >= 0; };
+  const bool contact = recorded(channel::kContactForce);
+  LayerSet s = LayerSet::none();
+  for (int i = 0; i < static_cast<int>(Layer::kCount); ++i) s.set(static_cast<Layer>(i), true);
+  return s.set(Layer::kLumen, !metadata.lumen.empty() || has_bounds(metadata))
+      .set(Layer::kWalls, !metadata.walls.empty())
+      .set(Layer::kPath, has_path(metadata) || recorded(channel::kTipReference))
+      .set(Layer::kStartGoal, has_start_goal(metadata))
+      .set(Layer::kMagnetic, recorded(channel::kActuationForce))
+      .set(Layer::kContact, contact)
+      // Friction draws at the contact force's scale, which a log without contact forces lacks.
+      .set(Layer::kFriction, contact && recorded(channel::kFrictionForce))
+      .set(Layer::kDrag, recorded(channel::kDragForce));
+}
+
 ForcePeaks measure_force_peaks(const FrameSource& source) {
   const std::size_t frames = source.frame_count();
   const std::size_t step = std::max<std::size_t>(1, frames / 2000);
@@ -178,6 +198,7 @@ FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const 
   // From the height, as for video frames; a frame taller than about twice its width (a phone's
   // portrait view) takes it from the width, so the HUD card's rows keep their labels and values apart.
   font_px_ = std::max(9, static_cast<int>(std::lround(std::min(h / 36.0, w / 16.8))));
+  hud_row_ = 1.45f * static_cast<float>(font_px_);
   map_x0_ = 0;
   // The panel needs about 15 characters of width whatever the frame size. A frame too small for
   // it beside a map of 30 % of the width (a thumbnail) gets the card and band of narrow frames
@@ -187,6 +208,12 @@ FramePainter::FramePainter(const LogMetadata& metadata, const View& view, const 
   // A HUD taller than the frame (the thumbnail of a run that ended early; a fed run's six rows in
   // a frame 100 px high) leaves out the title, not a value.
   if (hud && (side_panel_ ? hud_text_bottom() : card_bottom()) > h) title_line_ = false;
+  // Still too tall (a fed, steered run compared with another, both ended early: eight rows in a
+  // frame 100 px high): the rows close up, to no less than 1.2 font sizes apart.
+  const float fs = static_cast<float>(font_px_), card_margin = side_panel_ ? 0.0f : 0.4f * fs;
+  const float overflow = hud_text_bottom() + card_margin - static_cast<float>(h);
+  const int rows = hud_quantities_.rows() + ended_early_.count();
+  if (hud && overflow > 0 && rows > 1) hud_row_ = std::max(1.2f * fs, hud_row_ - overflow / static_cast<float>(rows - 1));
   // Without a side panel the HUD card takes a band across the top: the map starts below it, so
   // the card never hides a wall or the rod.
   // Likewise the legend (arrow scales, scale bar) takes a band across the bottom.
@@ -306,14 +333,14 @@ void FramePainter::paint_lumen(Canvas& c, const glm::dmat3& m) {
     const glm::vec2 b0 = apply(m, b.min), b1 = apply(m, b.max);
     c.fill_rect(glm::min(b0, b1), glm::max(b0, b1), colour);
   };
-  const bool has_bounds = (meta_.bounds.max - meta_.bounds.min).minCoeff() > 0;
+  const bool bounded = has_bounds(meta_);
   const bool lumen_is_bounds =
       lumen_is_box_ && lumen_box_.min == meta_.bounds.min && lumen_box_.max == meta_.bounds.max;
   if (meta_.lumen.empty() || lumen_is_bounds) {
-    if (has_bounds) fill_box(meta_.bounds, kLumen);
+    if (bounded) fill_box(meta_.bounds, kLumen);
     return;
   }
-  if (has_bounds) fill_box(meta_.bounds, kTissue);
+  if (bounded) fill_box(meta_.bounds, kTissue);
   if (lumen_is_box_) {
     fill_box(lumen_box_, kLumen);
     return;
@@ -361,14 +388,12 @@ double FramePainter::arrow_scale(Layer layer) const {
   }
 }
 
-bool FramePainter::path_drawn() const { return view_.layers.has(Layer::kPath) && meta_.path.size() >= 2; }
+bool FramePainter::path_drawn() const { return view_.layers.has(Layer::kPath) && has_path(meta_); }
 
-bool FramePainter::start_goal_drawn() const {
-  return view_.layers.has(Layer::kStartGoal) && (!meta_.path.empty() || meta_.start != meta_.goal);
-}
+bool FramePainter::start_goal_drawn() const { return view_.layers.has(Layer::kStartGoal) && has_start_goal(meta_); }
 
 float FramePainter::card_bottom() const {
-  const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = 1.45f * fs;
+  const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = hud_row_;
   const float title = title_line_ ? 1.3f : 0.0f, rows = static_cast<float>(hud_quantities_.rows() + ended_early_.count());
   const float natural = 0.5f * pad + (0.3f + title + rows) * row + pad;
   // A card taller than the frame even without its title (a thumbnail of two runs that ended
@@ -378,7 +403,7 @@ float FramePainter::card_bottom() const {
 }
 
 float FramePainter::hud_text_bottom() const {
-  const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = 1.45f * fs;
+  const float fs = static_cast<float>(font_px_), pad = 0.8f * fs, row = hud_row_;
   const float title = title_line_ ? 1.3f : 0.0f, rows = static_cast<float>(hud_quantities_.rows() + ended_early_.count());
   return pad + fs + (title + rows - 1.0f) * row + 0.35f * fs;
 }
@@ -447,7 +472,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     const float hud_top = y;
     if (!meta_.title.empty() && title_line_) {
       c.text(meta_.title, {lx, y}, static_cast<int>(std::lround(1.1 * fs)), kInk);
-      y += 1.3f * row;
+      y += 1.3f * hud_row_;
     }
     const DisplayUnit mm = length_unit(0.01);
     std::snprintf(buf, sizeof buf, "%.3f s", f.time);
@@ -465,7 +490,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
       if (shown) c.text(shown, {lx, y}, fs, label_colour);
       c.text(value, {rx, y}, fs, value_colour, TextAlign::kRight);
       hud_fields_.push_back({shown ? shown : "", shown ? lx + c.text_width(shown, fs) : lx, value_left, value});
-      y += row;
+      y += hud_row_;
     };
     field({"Time", "t"}, buf);
     if (hud_quantities_.tip_error) field({"Tip error", "Error"}, format_value(f.tip_error, mm, 2));
@@ -500,7 +525,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     }
     // On a card, the card is what it was laid out in.
     if (side_panel_)
-      record("hud", hud_top, y - row);
+      record("hud", hud_top, y - hud_row_);
     else
       panel_items_.push_back({"hud", x0, x1, y0, card_bottom(), {}});
   }

@@ -51,6 +51,13 @@ double typical_peak(std::vector<double> values);
 // sampled), not the rendered window, so a clip draws the same arrows as the full video.
 ForceScales choose_force_scales(const FrameSource& source, const View& view);
 
+// The map layers that draw something for a log with `metadata` and the channels of `header`: the
+// lumen (or the bounds' backdrop) and walls of the run's vessel, its path (or the logged tip
+// reference) and its start and goal, and each force's arrows only if the log records that force.
+// The rod, trail, node markers, HUD and legend draw for every log. The replay page greys out the
+// others, so a reviewer does not look for magnetic arrows in a run only pushed from its root.
+LayerSet layers_with_content(const LogMetadata& metadata, const FrameLogHeader& header);
+
 // The runs in the picture that ended early: failed or stopped (their summary.json says so), or
 // killed before writing one (FrameSource::ended_early()), each with the time it had reached. The
 // HUD says so in red on every frame, so no picture of such a run passes for a finished one, nor a
@@ -142,6 +149,7 @@ class FramePainter {
   bool overlay_shown_ = false;    // the frame being painted shows another run's rod
   double scale_ = 1;              // px per m
   int font_px_;
+  float hud_row_ = 0;             // px from one HUD row to the next (closer in a frame too short)
   std::vector<glm::vec2> scratch_;
   std::vector<PanelItem> panel_items_;
   std::vector<HudField> hud_fields_;

@@ -76,6 +76,10 @@ void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec, 
     h.channels.push_back({channel::kActuationForce, "N", ChannelLayout::kNodeVectors, 2 * nodes});
     h.channels.push_back({channel::kContactForce, "N", ChannelLayout::kNodeVectors, 2 * nodes});
   }
+  if (spec.friction_and_drag) {
+    h.channels.push_back({channel::kFrictionForce, "N", ChannelLayout::kNodeVectors, 2 * nodes});
+    h.channels.push_back({channel::kDragForce, "N", ChannelLayout::kNodeVectors, 2 * nodes});
+  }
   if (spec.reference) {
     h.channels.push_back({channel::kTipReference, "m", ChannelLayout::kVector, 2});
     h.channels.push_back({channel::kTipError, "m", ChannelLayout::kScalars, 1});
@@ -87,8 +91,10 @@ void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec, 
   h.metadata = write_log_metadata(m);
   FrameLogWriter writer(path, h);
 
+  // A log of a run without a path (a free rod's) still needs a rod that moves.
+  const Polyline route = m.path.size() >= 2 ? m.path : synthetic_metadata(spec).path;
   const double ds = spec.rod_length / (spec.nodes - 1);
-  std::vector<double> values, pos(2 * nodes), act(2 * nodes), con(2 * nodes);
+  std::vector<double> values, pos(2 * nodes), act(2 * nodes), con(2 * nodes), friction(2 * nodes), drag(2 * nodes);
   for (int f = 0; f < spec.frames; ++f) {
     const double t = spec.frames > 1 ? spec.duration * f / (spec.frames - 1) : 0.0;
     const double s_tip = spec.rod_length + spec.speed * t;
@@ -96,7 +102,7 @@ void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec, 
     for (std::uint32_t i = 0; i < nodes; ++i) {
       const double s = s_tip - (nodes - 1 - i) * ds;
       Vec2 p = Vec2::Zero(), tangent = Vec2::UnitX();
-      along(m.path, s, p, tangent);
+      along(route, s, p, tangent);
       normals[i] = Vec2(-tangent.y(), tangent.x());
       // An S-shaped wiggle that fades to zero at the tip, so the tip stays on the path.
       const double wiggle = 0.12 * spec.cell * std::sin(2 * kPi * s / (1.5 * spec.cell)) * (s_tip - s) / spec.rod_length;
@@ -105,7 +111,7 @@ void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec, 
       pos[2 * i + 1] = p.y();
     }
     Vec2 tip_p = Vec2::Zero(), tip_t = Vec2::UnitX();
-    along(m.path, s_tip, tip_p, tip_t);
+    along(route, s_tip, tip_p, tip_t);
     values.assign(pos.begin(), pos.end());
     if (spec.forces) {
       std::fill(act.begin(), act.end(), 0.0);
@@ -121,9 +127,23 @@ void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec, 
       values.insert(values.end(), act.begin(), act.end());
       values.insert(values.end(), con.begin(), con.end());
     }
+    if (spec.friction_and_drag) {
+      std::fill(friction.begin(), friction.end(), 0.0);
+      for (const int k : spec.contact_nodes) {
+        const auto i = static_cast<std::size_t>(std::clamp(k, 0, spec.nodes - 1));
+        friction[2 * i] = -0.5 * spec.contact * normals[i].y();
+        friction[2 * i + 1] = 0.5 * spec.contact * normals[i].x();
+      }
+      std::fill(drag.begin(), drag.end(), 0.0);
+      const std::size_t tip = nodes - 1;  // against the motion: the normal turned back
+      drag[2 * tip] = -0.1 * spec.actuation * normals[tip].y();
+      drag[2 * tip + 1] = 0.1 * spec.actuation * normals[tip].x();
+      values.insert(values.end(), friction.begin(), friction.end());
+      values.insert(values.end(), drag.begin(), drag.end());
+    }
     if (spec.reference) {
       Vec2 ref = Vec2::Zero(), ref_t = Vec2::UnitX();
-      along(m.path, s_tip + 0.2 * spec.cell, ref, ref_t);
+      along(route, s_tip + 0.2 * spec.cell, ref, ref_t);
       const Vec2 tip(pos[2 * (nodes - 1)], pos[2 * (nodes - 1) + 1]);
       values.push_back(ref.x());
       values.push_back(ref.y());

@@ -26,6 +26,9 @@ struct SyntheticLogSpec {
   std::vector<int> contact_nodes = {10, 20};  // node indices (0 = base) that touch a wall
   bool forces = true;            // write force/actuation and force/contact
   bool reference = true;         // write tip/reference and tip/error
+  // Write force/friction (along the rod at the contact nodes, half the contact force) and
+  // force/drag (against the motion at the tip, a tenth of the tip force: a tip-only drag).
+  bool friction_and_drag = false;
   // Write feed/force and feed/length (control.advance): the root fed at `speed`, the drive's push
   // rising linearly from 0 to `feed_force` at the last frame.
   bool feed = false;
@@ -37,8 +40,9 @@ struct SyntheticLogSpec {
 LogMetadata synthetic_metadata(const SyntheticLogSpec& spec);
 // Writes the log to `path`. Throws InputError if the file cannot be written.
 void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec);
-// The same with other metadata (a vessel lumen, say): the rod slides along `metadata.path` (at
-// least 2 points), with the spec's rod, frames, speed and forces (its cell sets the wiggle).
+// The same with other metadata (a vessel lumen, say): the rod slides along `metadata.path` (the
+// spec's serpentine if it has fewer than 2 points), with the spec's rod, frames, speed and forces
+// (its cell sets the wiggle).
 void write_synthetic_log(const std::string& path, const SyntheticLogSpec& spec, const LogMetadata& metadata);
 
 }  // namespace vascsim::render

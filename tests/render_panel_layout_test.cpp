@@ -91,6 +91,41 @@ TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
   EXPECT_EQ(count(thumbnail, "scale bar"), 1u);
 }
 
+// The most rows a HUD has: a fed, steered run compared with another, both ended early (time, tip
+// error, magnetic force, feed force, fed length, contact, and a line for each end). In frames as
+// short as 100 px (by the layout's arithmetic, 110 px at the smallest font) the rows close up
+// rather than leave the frame or run into the legend.
+TEST(RenderPanelLayout, EightHudRowsStayInsideAShortFrame) {
+  ScratchDir dir("panel_eight_rows");
+  SyntheticLogSpec spec;
+  spec.feed = true;
+  FrameSource source(testing::make_run(dir, spec));
+  FrameState state;
+  source.frame(source.frame_count() - 1, state);
+  EarlyEnd failed, stopped;
+  failed.how = EarlyEnd::How::kFailed, failed.at = 0.9;
+  stopped.how = EarlyEnd::How::kStopped, stopped.at = 0.5;
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{1280, 720}, {1200, 100}, {640, 120}, {320, 180}, {160, 120}}) {
+    const std::string size = std::to_string(w) + " x " + std::to_string(h);
+    View view;
+    view.width = w;
+    view.height = h;
+    FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state, {failed, stopped});
+    Canvas canvas(w, h);
+    painter.paint(canvas, state, {});
+    ASSERT_EQ(painter.hud_fields().size(), 8u) << size;
+    const auto& items = painter.panel_items();
+    ASSERT_FALSE(items.empty()) << size;
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      EXPECT_GE(items[k].top, 0.0f) << size << ": " << items[k].what;
+      EXPECT_LE(items[k].bottom, static_cast<float>(h)) << size << ": " << items[k].what;
+      if (k > 0) {
+        EXPECT_LE(items[k - 1].bottom, items[k].top) << size << ": " << items[k - 1].what << " over " << items[k].what;
+      }
+    }
+  }
+}
+
 // The HUD shows what the log records: a catheter only pushed from its root (control.mode
 // "none") showed a "Tip error" of 95 mm to a target nothing followed and a magnetic force of
 // zero, and not the drive's push; a free rod's showed three rows of "n/a".

@@ -1,5 +1,5 @@
-// The view as a value: layer names parse and print back, every layer changes the picture when
-// it has something to draw, a still at time T is byte-identical to the video frame at T (the
+// The view as a value: layer names parse and print back, a layer changes the picture exactly when
+// the log has something for it to draw, a still at time T is byte-identical to the video frame at T (the
 // trail rebuilt from the first frame), and `vascsim render` rejects bad view options with exit 2
 // naming the option.
 #include <gtest/gtest.h>
@@ -47,15 +47,18 @@ TEST(RenderView, LayerListsParseAndPrintBack) {
   EXPECT_THROW(parse_centre("0,-1000.5"), InputError);
 }
 
-// Each layer, turned off alone, changes the picture of a frame that has something for it.
-TEST(RenderView, EveryLayerDrawsSomething) {
-  ScratchDir dir("view_layers");
-  SyntheticLogSpec spec;
+// Each layer, turned off alone, changes the picture exactly when layers_with_content says the log
+// has something for it (what the replay page greys out): `metadata` is the run's, `spec` gives its
+// channels.
+void expect_layers_change_the_picture_as_their_content_says(const ScratchDir& dir, const std::string& name,
+                                                            SyntheticLogSpec spec, const LogMetadata& metadata) {
   spec.frames = 30;
   spec.duration = 3;
   spec.speed = 0.005;
-  const std::string run = testing::make_run(dir, spec);
-  FrameSource source(run);
+  const std::string log = dir / (name + ".vlog");
+  write_synthetic_log(log, spec, metadata);
+  FrameSource source(log);
+  const LayerSet content = layers_with_content(source.metadata(), source.header());
   ViewFrameInputs in;
   in.source = &source;
   in.peaks = measure_force_peaks(source);
@@ -68,12 +71,43 @@ TEST(RenderView, EveryLayerDrawsSomething) {
   render_view_frame(canvas, in, all, 2.0, reference);
   for (int i = 0; i < static_cast<int>(Layer::kCount); ++i) {
     const Layer layer = static_cast<Layer>(i);
-    if (layer == Layer::kFriction || layer == Layer::kDrag) continue;  // the synthetic log has neither channel
     View v = all;
     v.layers.set(layer, false);
     render_view_frame(canvas, in, v, 2.0, without);
-    EXPECT_NE(without, reference) << "turning off '" << layer_name(layer) << "' changed nothing";
+    EXPECT_EQ(without != reference, content.has(layer))
+        << name << ": turning off '" << layer_name(layer) << "' " << (without != reference ? "changed" : "left")
+        << " the picture, and the log " << (content.has(layer) ? "has" : "has no") << " content for it";
   }
+}
+
+TEST(RenderView, ALayerChangesThePictureExactlyWhenTheLogHasContentForIt) {
+  ScratchDir dir("view_layers");
+  SyntheticLogSpec every;  // a maze run that logs every force and the tip's reference
+  every.friction_and_drag = true;
+  expect_layers_change_the_picture_as_their_content_says(dir, "every", every, synthetic_metadata(every));
+  EXPECT_EQ(layers_with_content(synthetic_metadata(every), FrameSource(dir / "every.vlog").header()),
+            parse_layer_list("lumen,walls,path,start_goal,trail,rod,nodes,magnetic,contact,friction,drag,hud,legend"));
+
+  SyntheticLogSpec free_rod;  // no vessel, path, start or goal, and no force channels
+  free_rod.forces = false;
+  free_rod.reference = false;
+  LogMetadata bare = synthetic_metadata(free_rod);
+  bare.walls.clear();
+  bare.lumen.clear();
+  bare.path.clear();
+  bare.bounds = {};
+  bare.start = bare.goal = Vec2::Zero();
+  expect_layers_change_the_picture_as_their_content_says(dir, "free", free_rod, bare);
+  EXPECT_EQ(layers_with_content(bare, FrameSource(dir / "free.vlog").header()),
+            parse_layer_list("trail,rod,nodes,hud,legend"));
+
+  SyntheticLogSpec walled;  // walls, a start and goal but no path; magnetic and contact forces only
+  walled.reference = false;
+  LogMetadata no_path = synthetic_metadata(walled);
+  no_path.path.clear();
+  expect_layers_change_the_picture_as_their_content_says(dir, "walled", walled, no_path);
+  EXPECT_EQ(layers_with_content(no_path, FrameSource(dir / "walled.vlog").header()),
+            parse_layer_list("lumen,walls,start_goal,trail,rod,nodes,magnetic,contact,hud,legend"));
 }
 
 TEST(RenderView, StillAtTIsTheVideoFrameAtT) {

@@ -288,6 +288,8 @@ def check_load(page, shots):
             'the layer toggles start at the default layers', f"{st['layers']} vs {info['default_layers']}")
     checked = page.js('return Array.from(document.querySelectorAll("#layers input:checked")).map(c => c.value)')
     R.check(sorted(checked) == sorted(info['default_layers']), 'the checked layer boxes are the default layers', f'{checked}')
+    greyed = page.js('return Array.from(document.querySelectorAll("#layers input:disabled")).map(c => c.value)')
+    R.check(greyed == [], 'a maze run draws something for every layer: no layer box is greyed out', f'{greyed}')
     img = page.js('const i = document.getElementById("frame-a"); return [i.naturalWidth, i.naturalHeight];')
     p = page.frame_params()
     R.check(img[0] == int(p['width']) and img[1] == int(p['height']) and int(p['width']) % 2 == 0 and int(p['height']) % 2 == 0,
@@ -1008,6 +1010,14 @@ def check_warnings(driver, exe, shots, workdir):
         R.check(not any(l.startswith(('tip error', 'magnetic force')) for l in labels),
                 'warnings: a rod only pushed from its root has a feed force plot and no tip error or magnetic plot',
                 repr(labels))
+        # Its layer boxes: the magnetic arrows draw nothing for it, so that box is greyed out and
+        # says why; the walls and contact arrows do.
+        boxes = page.js('return Object.fromEntries(Array.from(document.querySelectorAll("#layers input")).map('
+                        '(c) => [c.value, [c.disabled, c.parentElement.title]]))')
+        R.check(boxes.get('magnetic') == [True, 'This run does not record a magnetic force']
+                and not boxes.get('walls', [True])[0] and not boxes.get('contact', [True])[0],
+                'warnings: the magnetic layer box of a run only pushed from its root is greyed out and says why',
+                repr(boxes))
         rows = [th.text for th in page.d.find_elements(By.CSS_SELECTOR, '#summary tbody th')]
         R.check({'feed max', 'fed length'} <= set(rows) and not {'tip error RMS', 'magnetic max'} & set(rows),
                 'warnings: its summary gives the feed\'s push and length, no tip error or magnetic maximum', repr(rows))

@@ -490,9 +490,19 @@
     }
   }
 
+  // What a layer draws, for the tooltip of one that draws nothing for the runs shown.
+  const LAYER_CONTENT = {
+    lumen: 'a vessel', walls: 'vessel walls', path: 'a reference path', start_goal: 'a start or goal',
+    magnetic: 'a magnetic force', contact: 'contact forces', friction: 'friction forces', drag: 'drag forces',
+  };
+
   function buildLayerToggles() {
     const box = $('layers');
     box.innerHTML = '';
+    // A layer that draws nothing for any run shown (the magnetic arrows of a run only pushed from
+    // its root, the walls of a free rod) stays listed, so a view's layers keep their meaning in
+    // its link and command, but greyed out and disabled.
+    const withContent = new Set(runs().flatMap((r) => S.info[r].layers_with_content || S.info[r].layers));
     for (const name of S.info.a.layers) {
       const label = document.createElement('label');
       const cb = document.createElement('input');
@@ -500,6 +510,12 @@
       cb.id = `layer-${name}`;
       cb.value = name;
       cb.checked = S.layers.includes(name);
+      if (!withContent.has(name)) {
+        cb.disabled = true;
+        label.classList.add('empty');
+        const what = LAYER_CONTENT[name] || name;
+        label.title = `${S.compare ? 'Neither run records' : 'This run does not record'} ${what}`;
+      }
       cb.addEventListener('change', () => {
         const on = new Set(Array.from(document.querySelectorAll('#layers input')).filter((c) => c.checked).map((c) => c.value));
         S.layers = S.info.a.layers.filter((l) => on.has(l));
