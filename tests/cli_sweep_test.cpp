@@ -101,6 +101,7 @@ TEST(SweepCli, ASweepOfRunsPushedFromTheirRootTabulatesTheDrivesPush) {
     const nlohmann::json summary =
         nlohmann::json::parse(read_text(dir + "/speed/runs/000" + std::to_string(i) + "/summary.json"));
     EXPECT_EQ(summary["navigation"]["control_mode"], "none");
+    EXPECT_EQ(csv_cell(csv, i, "tip_error_rms_m"), "") << "nothing steered the tip of run " << i;
     EXPECT_EQ(std::stod(csv_cell(csv, i, "feed_force_max_N")),
               summary["navigation"]["advance"]["feed_force_max"].get<double>()) << i;
   }
@@ -111,6 +112,10 @@ TEST(SweepCli, ASweepOfRunsPushedFromTheirRootTabulatesTheDrivesPush) {
       sweep_command(write_sweep("mode", R"({"/control/mode": ["none", "force"]})") + " --out " + dir + "/mode");
   ASSERT_EQ(mixed.exit_code, 0) << mixed.output;
   EXPECT_TRUE(has(mixed.output, "tip error RMS (mm)") && has(mixed.output, "feed force max (mN)")) << mixed.output;
+  const std::string mixed_csv = read_text(dir + "/mode/results.csv");
+  EXPECT_EQ(csv_cell(mixed_csv, 0, "/control/mode"), "none");
+  EXPECT_EQ(csv_cell(mixed_csv, 0, "tip_error_rms_m"), "");
+  EXPECT_NE(csv_cell(mixed_csv, 1, "tip_error_rms_m"), "") << "the steered run has a tip error";
 }
 
 TEST(SweepCli, ResumesSkippingCompletedRunsAndRerunsOnlyWhatIsMissing) {

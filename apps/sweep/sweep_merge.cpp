@@ -119,7 +119,7 @@ SweepKind sweep_kind(const SweepDirectory& sweep, const std::vector<RunOutcome>&
   bool any_done = false;
   for (const auto& o : outcomes) {
     any_done = any_done || o.status == "done";
-    if (!std::isfinite(o.metrics[kTipErrorRms])) continue;  // no navigation figures
+    if (!std::isfinite(o.metrics[kGoalReached])) continue;  // no navigation figures
     kind.navigation = true;
     // A summary that does not say (written before control_mode was) is of a steered run.
     kind.steered = kind.steered || o.control_mode != "none";
