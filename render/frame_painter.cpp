@@ -139,6 +139,20 @@ LayerSet layers_with_content(const LogMetadata& metadata, const FrameLogHeader& 
       .set(Layer::kDrag, recorded(channel::kDragForce));
 }
 
+const char* layer_content_phrase(Layer layer) {
+  switch (layer) {
+    case Layer::kLumen: return "a vessel";
+    case Layer::kWalls: return "vessel walls";
+    case Layer::kPath: return "a reference path";
+    case Layer::kStartGoal: return "a start or goal";
+    case Layer::kMagnetic: return "a magnetic force";
+    case Layer::kContact: return "contact forces";
+    case Layer::kFriction: return "friction forces";
+    case Layer::kDrag: return "drag forces";
+    default: return "";
+  }
+}
+
 ForcePeaks measure_force_peaks(const FrameSource& source) {
   const std::size_t frames = source.frame_count();
   const std::size_t step = std::max<std::size_t>(1, frames / 2000);

@@ -57,6 +57,10 @@ ForceScales choose_force_scales(const FrameSource& source, const View& view);
 // The rod, trail, node markers, HUD and legend draw for every log. The replay page greys out the
 // others, so a reviewer does not look for magnetic arrows in a run only pushed from its root.
 LayerSet layers_with_content(const LogMetadata& metadata, const FrameLogHeader& header);
+// What a layer draws that a log may lack, as a phrase ("a magnetic force"), for saying why it
+// draws nothing (`vascsim render --layers`, the replay page's greyed-out boxes); "" for the
+// layers that draw for every log.
+const char* layer_content_phrase(Layer layer);
 
 // The runs in the picture that ended early: failed or stopped (their summary.json says so), or
 // killed before writing one (FrameSource::ended_early()), each with the time it had reached. The

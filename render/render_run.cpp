@@ -180,6 +180,16 @@ RenderReport render_run(const std::string& run_dir, const RenderOptions& options
     for (const FrameSource* run : {&source, overlay.get()})
       if (run)
         for (const std::string& warning : run->warnings()) o.warn(warning);
+  const bool plots_only = !o.still && o.mp4_path.empty() && o.png_dir.empty() && !o.plots_dir.empty();
+  if (o.warn && !plots_only) {
+    const LayerSet content = layers_with_content(source.metadata(), source.header());
+    for (int i = 0; i < static_cast<int>(Layer::kCount); ++i) {
+      const Layer layer = static_cast<Layer>(i);
+      if (o.layers_named.has(layer) && o.view.layers.has(layer) && !content.has(layer))
+        o.warn(std::string("warning: layer '") + layer_name(layer) + "' draws nothing: " + source.log_path() +
+               " does not record " + layer_content_phrase(layer));
+    }
+  }
   if (o.still) return render_still(source, overlay.get(), inputs, o);
   if (o.mp4_path.empty() && o.png_dir.empty() && o.plots_dir.empty()) {
     // A run directory's log named directly renders to the run's video, as its directory does.

@@ -24,6 +24,9 @@ struct RenderOptions {
   std::string png_path;         // the still's PNG file
   std::string overlay_run;      // compare: this run's rod drawn over the map (a still or a video)
   View view;              // size, camera, layers, arrow scales
+  // The layers the user named (--layers): each that draws nothing for this run (a magnetic force
+  // its log does not record, say) gets a warning, rather than a picture silently without it.
+  LayerSet layers_named = LayerSet::none();
   int fps = 30;           // video frames per second
   double speed = 1.0;     // simulated seconds per video second
   std::optional<double> from, to;  // s, simulated time range (default: the whole log)

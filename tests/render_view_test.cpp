@@ -110,6 +110,33 @@ TEST(RenderView, ALayerChangesThePictureExactlyWhenTheLogHasContentForIt) {
             parse_layer_list("lumen,walls,start_goal,trail,rod,nodes,magnetic,contact,hud,legend"));
 }
 
+// `--layers` naming a layer that draws nothing for the run (a force its log does not record) says
+// so and still makes the picture; the default layers, which the user did not name, say nothing.
+TEST(RenderView, ANamedLayerThatDrawsNothingForTheRunIsWarnedAbout) {
+  ScratchDir dir("view_named_layers");
+  SyntheticLogSpec pushed;  // no magnetic or contact force, no friction or drag
+  pushed.forces = false;
+  const std::string run = testing::make_run(dir, pushed);
+  const auto named = testing::run_vascsim(
+      "render " + run + " --still 0.5 --width 160 --height 120 --layers rod,walls,magnetic,drag --png " + (dir / "n.png"), dir);
+  ASSERT_EQ(named.exit_code, 0) << named.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "n.png"));
+  const std::string log = run + "/frames.vlog";
+  EXPECT_NE(named.err.find("warning: layer 'magnetic' draws nothing: " + log + " does not record a magnetic force"),
+            std::string::npos) << named.err;
+  EXPECT_NE(named.err.find("warning: layer 'drag' draws nothing: " + log + " does not record drag forces"),
+            std::string::npos) << named.err;
+  EXPECT_EQ(named.err.find("layer 'rod'"), std::string::npos) << named.err;
+  EXPECT_EQ(named.err.find("layer 'walls'"), std::string::npos) << named.err;
+  const auto hidden = testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --layers rod,magnetic "
+                                           "--hide magnetic --png " + (dir / "h.png"), dir);
+  EXPECT_EQ(hidden.err.find("layer 'magnetic'"), std::string::npos) << "a layer hidden again is not drawn: " << hidden.err;
+  const auto defaults =
+      testing::run_vascsim("render " + run + " --still 0.5 --width 160 --height 120 --png " + (dir / "d.png"), dir);
+  ASSERT_EQ(defaults.exit_code, 0) << defaults.err;
+  EXPECT_EQ(defaults.err.find("draws nothing"), std::string::npos) << defaults.err;
+}
+
 TEST(RenderView, StillAtTIsTheVideoFrameAtT) {
   ScratchDir dir("view_still");
   SyntheticLogSpec spec;

@@ -111,13 +111,14 @@ json ReplayRun::info() const {
   json channels = json::array();
   for (const LogChannel& c : h.channels)
     channels.push_back({{"name", c.name}, {"unit", c.unit}, {"layout", layout_name(c.layout)}, {"count", c.count}});
-  json layers = json::array(), defaults = json::array(), with_content = json::array();
+  json layers = json::array(), defaults = json::array(), with_content = json::array(), content = json::object();
   const render::LayerSet drawn = render::layers_with_content(m, h);
   for (const auto& name : render::all_layer_names()) {
     layers.push_back(name);
     const render::Layer layer = *render::layer_from_name(name);
     if (render::LayerSet::defaults().has(layer)) defaults.push_back(name);
     if (drawn.has(layer)) with_content.push_back(name);
+    if (*render::layer_content_phrase(layer)) content[name] = render::layer_content_phrase(layer);
   }
   return {{"run", id_},
           {"path", path_},
@@ -135,7 +136,8 @@ json ReplayRun::info() const {
           {"bounds", {{"min", pair(m.bounds.min.x(), m.bounds.min.y())}, {"max", pair(m.bounds.max.x(), m.bounds.max.y())}}},
           {"layers", layers},
           {"default_layers", defaults},
-          {"layers_with_content", with_content}};
+          {"layers_with_content", with_content},
+          {"layer_content", content}};
 }
 
 json ReplayRun::nodes(double t) const {

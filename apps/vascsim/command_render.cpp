@@ -112,7 +112,7 @@ int run_render_command(int argc, char** argv) {
     throw UsageError("--camera center needs --center X,Y");
   if (o.view.camera != render::CameraMode::kCentre && args.value("center"))
     throw UsageError("--center goes with --camera center (or no --camera), not --camera " + *args.value("camera"));
-  view_option("layers", [&o](const std::string& t) { o.view.layers = render::parse_layer_list(t); });
+  view_option("layers", [&o](const std::string& t) { o.view.layers = o.layers_named = render::parse_layer_list(t); });
   view_option("hide", [&o](const std::string& t) { o.view.layers = render::hide_layers(o.view.layers, t); });
   o.view.zoom = args.number("zoom", 1.0, 1e-3, 1e3);
   o.view.actuation_px_per_newton = args.number("actuation-scale", 0.0, 0.0, 1e15);

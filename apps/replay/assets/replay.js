@@ -490,12 +490,6 @@
     }
   }
 
-  // What a layer draws, for the tooltip of one that draws nothing for the runs shown.
-  const LAYER_CONTENT = {
-    lumen: 'a vessel', walls: 'vessel walls', path: 'a reference path', start_goal: 'a start or goal',
-    magnetic: 'a magnetic force', contact: 'contact forces', friction: 'friction forces', drag: 'drag forces',
-  };
-
   function buildLayerToggles() {
     const box = $('layers');
     box.innerHTML = '';
@@ -513,7 +507,7 @@
       if (!withContent.has(name)) {
         cb.disabled = true;
         label.classList.add('empty');
-        const what = LAYER_CONTENT[name] || name;
+        const what = (S.info.a.layer_content || {})[name] || name;
         label.title = `${S.compare ? 'Neither run records' : 'This run does not record'} ${what}`;
       }
       cb.addEventListener('change', () => {
