@@ -42,6 +42,7 @@ glm::vec2 apply(const glm::dmat3& m, Vec2 p) {
 
 bool has_bounds(const LogMetadata& meta) { return (meta.bounds.max - meta.bounds.min).minCoeff() > 0; }
 bool has_path(const LogMetadata& meta) { return meta.path.size() >= 2; }
+bool has_vessel(const LogMetadata& meta) { return !meta.lumen.empty() || !meta.walls.empty(); }
 // A scene without navigation logs neither a path nor a start and goal apart.
 bool has_start_goal(const LogMetadata& meta) { return !meta.path.empty() || meta.start != meta.goal; }
 
@@ -128,7 +129,7 @@ LayerSet layers_with_content(const LogMetadata& metadata, const FrameLogHeader& 
   const bool contact = recorded(channel::kContactForce);
   LayerSet s = LayerSet::none();
   for (int i = 0; i < static_cast<int>(Layer::kCount); ++i) s.set(static_cast<Layer>(i), true);
-  return s.set(Layer::kLumen, !metadata.lumen.empty() || has_bounds(metadata))
+  return s.set(Layer::kLumen, !metadata.lumen.empty() || (has_vessel(metadata) && has_bounds(metadata)))
       .set(Layer::kWalls, !metadata.walls.empty())
       .set(Layer::kPath, has_path(metadata) || recorded(channel::kTipReference))
       .set(Layer::kStartGoal, has_start_goal(metadata))
@@ -341,8 +342,10 @@ glm::vec2 FramePainter::arrow_vector(const Vec2& px, double max_px) const {
 
 // The lumen in the tissue tone, so the walls read as the boundary of a channel: the logged rings'
 // even-odd interior over the rest of the bounds in a darker tissue tone; in older logs, without
-// rings, the environment's extent.
+// rings, the environment's extent. A run without a vessel (a free rod) has none: its bounds only
+// frame the rod, and a lumen-toned box around it read as a channel the rod was in.
 void FramePainter::paint_lumen(Canvas& c, const glm::dmat3& m) {
+  if (!has_vessel(meta_)) return;
   auto fill_box = [&](const Box2& b, Rgba colour) {
     const glm::vec2 b0 = apply(m, b.min), b1 = apply(m, b.max);
     c.fill_rect(glm::min(b0, b1), glm::max(b0, b1), colour);

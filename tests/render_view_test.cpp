@@ -88,14 +88,15 @@ TEST(RenderView, ALayerChangesThePictureExactlyWhenTheLogHasContentForIt) {
   EXPECT_EQ(layers_with_content(synthetic_metadata(every), FrameSource(dir / "every.vlog").header()),
             parse_layer_list("lumen,walls,path,start_goal,trail,rod,nodes,magnetic,contact,friction,drag,hud,legend"));
 
-  SyntheticLogSpec free_rod;  // no vessel, path, start or goal, and no force channels
+  // No vessel, path, start or goal, and no force channels; bounds that frame the rod (as a free
+  // rod logs them: a box round the lumen-toned rod read as a channel it was in).
+  SyntheticLogSpec free_rod;
   free_rod.forces = false;
   free_rod.reference = false;
   LogMetadata bare = synthetic_metadata(free_rod);
   bare.walls.clear();
   bare.lumen.clear();
   bare.path.clear();
-  bare.bounds = {};
   bare.start = bare.goal = Vec2::Zero();
   expect_layers_change_the_picture_as_their_content_says(dir, "free", free_rod, bare);
   EXPECT_EQ(layers_with_content(bare, FrameSource(dir / "free.vlog").header()),
