@@ -1021,6 +1021,15 @@ def check_warnings(driver, exe, shots, workdir):
         rows = [th.text for th in page.d.find_elements(By.CSS_SELECTOR, '#summary tbody th')]
         R.check({'feed max', 'fed length'} <= set(rows) and not {'tip error RMS', 'magnetic max'} & set(rows),
                 'warnings: its summary gives the feed\'s push and length, no tip error or magnetic maximum', repr(rows))
+        # Forces of a newton or more read in N, as the HUD gives them, and smaller ones in mN.
+        with open(os.path.join(run, 'summary.json')) as f:
+            nav = json.load(f)['navigation']
+        for key, value in (('contact max', nav['contact_force_max']), ('feed max', nav['advance']['feed_force_max'])):
+            cell = page.d.find_element(By.CSS_SELECTOR, f'#summary td[data-key="{key}"]').text
+            m = re.fullmatch(r'(-?[\d.]+) (N|mN)', cell)
+            R.check(m is not None and m.group(2) == ('N' if abs(value) >= 1 else 'mN')
+                    and abs(float(m.group(1)) * UNIT_FACTORS[m.group(2)] - value) <= 1e-3 * abs(value),
+                    f'warnings: the summary gives {key} in a unit that suits it', f'{cell!r} for {value} N')
         # The squashed rod's note goes to the first frame it was squashed in (summary.json).
         squashed = [n for n in notes if 'stretched or squashed' in n.text]
         want = summary['large_axial_strain']['first_time']

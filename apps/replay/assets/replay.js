@@ -1171,7 +1171,9 @@
     }
     const nav = (s) => (s && s.navigation) || {};
     const mm = (v) => (v === null || v === undefined ? '–' : `${(v * 1e3).toFixed(3)} mm`);
-    const mN = (v) => (v === null || v === undefined ? '–' : `${fmtSig(v * 1e3, 4)} mN`);
+    // In mN up to 1 N, in N above (a crammed feed's 6102 mN read as its HUD's 6.10 N does not).
+    const force = (v) => (v === null || v === undefined ? '–'
+      : Math.abs(v) >= 1 ? `${fmtSig(v, 4)} N` : `${fmtSig(v * 1e3, 4)} mN`);
     const sec = (v) => (v === null || v === undefined ? '–' : `${Number(v).toFixed(3)} s`);
     const rows = [
       ['result', (s) => (!s ? ['–', ''] : s.ok ? ['ok', 'ok'] : [s.stopped_by ? 'stopped' : 'failed', 'bad'])],
@@ -1182,9 +1184,9 @@
       }, 'nav'],
       ['tip error RMS', (s) => [mm(nav(s).tip_error_rms), ''], 'steer'],
       ['tip error max', (s) => [mm(nav(s).tip_error_max), ''], 'steer'],
-      ['contact max', (s) => [mN(nav(s).contact_force_max), ''], 'nav'],
-      ['magnetic max', (s) => [mN(nav(s).actuation_force_max), ''], 'steer'],
-      ['feed max', (s) => [mN((nav(s).advance || {}).feed_force_max), ''], 'feed'],
+      ['contact max', (s) => [force(nav(s).contact_force_max), ''], 'nav'],
+      ['magnetic max', (s) => [force(nav(s).actuation_force_max), ''], 'steer'],
+      ['feed max', (s) => [force((nav(s).advance || {}).feed_force_max), ''], 'feed'],
       ['fed length', (s) => [mm((nav(s).advance || {}).fed_length), ''], 'feed'],
       ['simulated', (s) => [s ? sec(s.simulated_time) : '–', '']],
       ['wall time', (s) => [s ? sec(s.wall_time) : '–', '']],
