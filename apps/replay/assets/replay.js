@@ -496,7 +496,7 @@
     // A layer that draws nothing for any run shown (the magnetic arrows of a run only pushed from
     // its root, the walls of a free rod) stays listed, so a view's layers keep their meaning in
     // its link and command, but greyed out and disabled.
-    const withContent = new Set(runs().flatMap((r) => S.info[r].layers_with_content || S.info[r].layers));
+    const withContent = new Set(runs().flatMap((r) => S.info[r].layers_with_content));
     for (const name of S.info.a.layers) {
       const label = document.createElement('label');
       const cb = document.createElement('input');
@@ -507,7 +507,7 @@
       if (!withContent.has(name)) {
         cb.disabled = true;
         label.classList.add('empty');
-        const what = (S.info.a.layer_content || {})[name] || name;
+        const what = S.info.a.layer_content[name];
         label.title = `${S.compare ? 'Neither run records' : 'This run does not record'} ${what}`;
       }
       cb.addEventListener('change', () => {
