@@ -115,6 +115,37 @@ TEST(SceneFiles, MissingFileAndInvalidJson) {
   std::filesystem::remove_all(dir);
 }
 
+// A vascsim file of another kind where a scene or a sweep was expected (the maze `vascsim maze`
+// wrote, given to `vascsim run`; a scene given to `vascsim sweep`) is named with what it is and
+// what to do with it, not only with the format expected.
+TEST(SceneFiles, AFileOfAnotherKindSaysWhatItIsAndHowItIsUsed) {
+  const std::string dir = fresh_temp_dir("scene_other_kinds");
+  ASSERT_EQ(run_vascsim("maze --seed 3 --rows 4 --cols 6 --out " + dir + "/m.json").exit_code, 0);
+  ASSERT_EQ(run_vascsim("vessels --scene " + source_path("scenes/vessel_tree.json") + " --out " + dir + "/v.json").exit_code, 0);
+  const std::string expected = ": /format: expected \"vascsim-scene/1\", got ";
+  CommandResult r = run_vascsim("run " + dir + "/m.json --out " + dir + "/r");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(dir + "/m.json" + expected + "\"vascsim-maze/1\": it is a maze written by `vascsim maze` for "
+                          "inspection; a scene makes its maze from the settings in its \"maze\" section"),
+            std::string::npos) << r.output;
+  r = run_vascsim("run " + dir + "/v.json --out " + dir + "/r");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(dir + "/v.json" + expected + "\"vascsim-vessels/1\": it is a vessel network written by "
+                          "`vascsim vessels`"), std::string::npos) << r.output;
+  r = run_vascsim("sweep " + source_path("scenes/maze_default.json") + " --out " + dir + "/s");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("maze_default.json: /format: expected \"vascsim-sweep/1\", got \"vascsim-scene/1\": it is a "
+                          "scene: `vascsim run FILE --out DIR` runs it"), std::string::npos) << r.output;
+  // A format vascsim does not write gets no hint.
+  write_text(dir + "/other.json", R"({"format": "someone-else/3"})");
+  r = run_vascsim("run " + dir + "/other.json --out " + dir + "/r");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(dir + "/other.json" + expected + "\"someone-else/3\"\n"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/r"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/s"));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(SceneFiles, ShippedScenesAreValid) {
   for (const char* name : {"scenes/maze_default.json", "scenes/paper_maze.json", "scenes/maze_body_drag.json"}) {
     const std::string dir = fresh_temp_dir("shipped");

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "sim/io/bounded_read.h"
+#include "sim/io/file_kind.h"
 #include "sim/env/trajectory.h"
 #include "sim/io/scene_sections.h"
 #include "sim/scene/input_error.h"
@@ -20,9 +21,8 @@ Scene read_scene_text(const std::string& text, const std::string& label) {
   Scene scene;
   scene.file = label;
   io::FieldReader in(root, label, "");
-  in.text("format", "vascsim-scene/1");  // reserved for future format versions
-  if (in.has("format") && root["format"] != "vascsim-scene/1")
-    in.fail("format", "\"vascsim-scene/1\"", root["format"]);
+  io::check_format(root, "vascsim-scene/1", label);  // reserved for future format versions
+  in.text("format", "vascsim-scene/1");
   scene.name = in.text("name", scene.name);
   in.text("description", "");
   // Each section has its reader in sim/io/read_<section>.cpp.

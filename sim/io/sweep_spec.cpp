@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "sim/io/bounded_read.h"
+#include "sim/io/file_kind.h"
 #include "sim/io/json_fields.h"
 #include "sim/scene/input_error.h"
 
@@ -154,7 +155,8 @@ SweepSpec read_sweep_text(const std::string& text, const std::string& label) {
   SweepSpec spec;
   spec.file = label;
   if (!in.has("format")) throw InputError(label + ": /format: missing (expected \"vascsim-sweep/1\")");
-  if (in.text("format", "") != "vascsim-sweep/1") in.fail("format", "\"vascsim-sweep/1\"", root["format"]);
+  io::check_format(root, "vascsim-sweep/1", label);
+  in.text("format", "");
   spec.name = in.text("name", std::filesystem::path(label).stem().string());
   if (spec.name.empty() || spec.name.size() > 64 || spec.name.find_first_of("/\\\n\r\t\"'$`") != std::string::npos)
     in.fail("name", "a name of 1 to 64 characters without slashes, quotes or '$'", root["name"]);
