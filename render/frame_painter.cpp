@@ -113,6 +113,7 @@ constexpr Rgba kOverlayEdge = hex(0xA61E4D, 0.6f);
 constexpr Rgba kFriction = hex(0x2B8A3E);
 constexpr Rgba kDrag = hex(0x0C8599);
 constexpr Rgba kNode = hex(0xFFFFFF);
+constexpr Rgba kSupport = hex(0x343A40);
 
 }  // namespace
 
@@ -133,6 +134,7 @@ LayerSet layers_with_content(const LogMetadata& metadata, const FrameLogHeader& 
       .set(Layer::kWalls, !metadata.walls.empty())
       .set(Layer::kPath, has_path(metadata) || recorded(channel::kTipReference))
       .set(Layer::kStartGoal, has_start_goal(metadata))
+      .set(Layer::kSupports, !metadata.boundary.empty())
       .set(Layer::kMagnetic, recorded(channel::kActuationForce))
       .set(Layer::kContact, contact)
       // Friction draws at the contact force's scale, which a log without contact forces lacks.
@@ -146,6 +148,7 @@ const char* layer_content_phrase(Layer layer) {
     case Layer::kWalls: return "vessel walls";
     case Layer::kPath: return "a reference path";
     case Layer::kStartGoal: return "a start or goal";
+    case Layer::kSupports: return "a clamp or supports";
     case Layer::kMagnetic: return "a magnetic force";
     case Layer::kContact: return "contact forces";
     case Layer::kFriction: return "friction forces";
@@ -317,6 +320,7 @@ void FramePainter::paint_world(Canvas& c, const glm::dmat3& m, const FrameState&
       c.disc(p, r, kNode);
     }
   }
+  if (on.has(Layer::kSupports)) paint_supports(c);
 
   // Arrows start at the node they act on and point along the force (screen y flips).
   const float contact_w = contact_arrow_width(h);
@@ -382,6 +386,59 @@ void FramePainter::paint_rod(Canvas& c, const glm::dmat3& m, const FrameState& f
   c.polyline(scratch_, 2 * r + 2.0f, edge);
   c.polyline(scratch_, 2 * r, body);
   c.disc(scratch_.back(), r + 1.5f, tip);
+}
+
+// The engineering symbols of how the rod is held, at the held nodes (scratch_) where they are now:
+// a wall hatched on its far side across a clamp's root; a triangle on hatched ground under a pin;
+// the triangle on rollers for a support, under the node for one that holds y (x slides), to its
+// left for one that holds x (y slides); a ring round a node moved kinematically. Sized from the
+// rod's drawn width, so they read at any zoom without hiding a short rod, and never smaller than
+// the start and goal markers, so a thin rod's clamp still reads in a whole-frame view.
+void FramePainter::paint_supports(Canvas& c) const {
+  const BoundarySpec& holds = meta_.boundary;
+  const std::size_t n = scratch_.size();
+  const float rod = std::max(static_cast<float>(meta_.rod_outer_radius * scale_), 0.5f * float(view_.min_rod_width_px));
+  const float h = static_cast<float>(view_.height);
+  const float u = std::clamp(2.5f * rod, std::max(5.0f, h / 72.0f), std::max(5.0f, h / 20.0f));
+  const float line = std::max(1.0f, 0.15f * u);
+  // A node index outside the rod (a hand-edited log) draws nothing.
+  const auto at = [&](int node) -> const glm::vec2* { return node >= 0 && std::size_t(node) < n ? &scratch_[node] : nullptr; };
+  const auto hatched_line = [&](glm::vec2 centre, glm::vec2 along, float half, glm::vec2 away) {
+    c.capsule(centre - half * along, centre + half * along, 0.5f * line, kSupport);
+    for (int k = 0; k <= 4; ++k) {
+      const glm::vec2 a = centre + (-half + 0.5f * half * static_cast<float>(k)) * along;
+      c.capsule(a, a + 0.7f * u * (away - along), 0.3f * line, kSupport);
+    }
+  };
+  if (holds.clamp != ClampKind::kNone && n >= 2) {
+    const glm::vec2 d = scratch_[1] - scratch_[0];
+    const glm::vec2 along = glm::length(d) > 0 ? glm::normalize(d) : glm::vec2(1, 0);
+    const glm::vec2 across(-along.y, along.x);
+    const glm::vec2 root = holds.clamp == ClampKind::kCentred ? 0.5f * (scratch_[0] + scratch_[1]) : scratch_[0];
+    hatched_line(root, across, 1.6f * u, -along);
+    c.capsule(root - 1.6f * u * across, root + 1.6f * u * across, 1.3f * line, kSupport);
+  }
+  // `down`: from the node to the ground the symbol stands on (screen, unit).
+  const auto stand = [&](glm::vec2 apex, glm::vec2 down, bool rollers) {
+    const glm::vec2 side(-down.y, down.x);
+    const glm::vec2 base = apex + 1.4f * u * down;
+    c.triangle(apex, base + 0.8f * u * side, base - 0.8f * u * side, kSupport);
+    glm::vec2 ground = base + 0.5f * line * down;
+    if (rollers) {
+      const float r = 0.25f * u;
+      for (float s : {-0.45f, 0.45f}) c.disc(base + s * u * side + r * down, r, kSupport);
+      ground = base + (2 * r + line) * down;
+    }
+    hatched_line(ground, side, 1.1f * u, down);
+    c.disc(apex, 0.3f * u, kSupport);
+    c.disc(apex, 0.3f * u - line, kNode);
+  };
+  for (int node : holds.pinned)
+    if (const glm::vec2* p = at(node)) stand(*p, {0, 1}, false);
+  for (const SupportSpec& s : holds.supports)
+    if (const glm::vec2* p = at(s.node)) stand(*p, s.axis == SupportAxis::kY ? glm::vec2(0, 1) : glm::vec2(-1, 0), true);
+  for (const PrescribedMotionSpec& moved : holds.prescribed)
+    if (const glm::vec2* p = at(moved.node)) c.ring(*p, 0.8f * u, line, kSupport);
 }
 
 // Per-node arrows from the node positions in scratch_.

@@ -1,9 +1,9 @@
 // Draws one frame of a run on a canvas: the vessel lumen and walls, the reference path, start
-// and goal, the tip trail, the rod at its true radius, node markers, force arrows, and a panel
-// with the HUD (time, and what the log records of tip error, forces and feed), the legend and a
-// scale bar; each is a layer of the View and drawn only when on. Pure drawing: it reads a
-// FrameState and the log metadata, and holds only the view, the arrow scales and which runs
-// failed, fixed for a whole video.
+// and goal, the tip trail, the rod at its true radius, node markers, the clamp and supports that
+// hold it, force arrows, and a panel with the HUD (time, and what the log records of tip error,
+// forces and feed), the legend and a scale bar; each is a layer of the View and drawn only when
+// on. Pure drawing: it reads a FrameState and the log metadata, and holds only the view, the
+// arrow scales and which runs failed, fixed for a whole video.
 #pragma once
 
 #include <optional>
@@ -53,7 +53,8 @@ ForceScales choose_force_scales(const FrameSource& source, const View& view);
 
 // The map layers that draw something for a log with `metadata` and the channels of `header`: the
 // lumen (or the bounds' backdrop) and walls of the run's vessel, its path (or the logged tip
-// reference) and its start and goal, and each force's arrows only if the log records that force.
+// reference) and its start and goal, the clamp and supports where the scene holds the rod, and
+// each force's arrows only if the log records that force.
 // The rod, trail, node markers, HUD and legend draw for every log. The replay page greys out the
 // others, so a reviewer does not look for magnetic arrows in a run only pushed from its root.
 LayerSet layers_with_content(const LogMetadata& metadata, const FrameLogHeader& header);
@@ -117,6 +118,7 @@ class FramePainter {
                    const FrameState* overlay);
   void paint_lumen(Canvas& c, const glm::dmat3& m);
   void paint_rod(Canvas& c, const glm::dmat3& m, const FrameState& f, Rgba body, Rgba edge, Rgba tip);
+  void paint_supports(Canvas& c) const;
   glm::vec2 arrow_vector(const Vec2& px, double max_px) const;
   void paint_arrows(Canvas& c, const std::vector<double>& forces, double px_per_newton, double max_px, float width,
                     Rgba colour);

@@ -9,9 +9,9 @@ namespace vascsim::render {
 
 namespace {
 
-constexpr const char* kLayerNames[] = {"lumen",    "walls",   "path",     "start_goal", "trail",
-                                       "rod",      "nodes",   "magnetic", "contact",    "friction",
-                                       "drag",     "hud",     "legend"};
+constexpr const char* kLayerNames[] = {"lumen",   "walls",    "path",    "start_goal", "trail",
+                                       "rod",     "nodes",    "supports", "magnetic",   "contact",
+                                       "friction", "drag",    "hud",      "legend"};
 static_assert(sizeof(kLayerNames) / sizeof(kLayerNames[0]) == static_cast<std::size_t>(Layer::kCount));
 
 std::string known_layers() {

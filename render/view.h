@@ -23,7 +23,7 @@ enum class CameraMode {
 
 // What a frame can show. The order is the drawing order of the map layers.
 enum class Layer : int {
-  kLumen, kWalls, kPath, kStartGoal, kTrail, kRod, kNodes,
+  kLumen, kWalls, kPath, kStartGoal, kTrail, kRod, kNodes, kSupports,
   kMagnetic, kContact, kFriction, kDrag,
   kHud, kLegend,
   kCount
@@ -45,8 +45,8 @@ class LayerSet {
   std::uint32_t bits_;
 };
 
-// "lumen", "walls", "path", "start_goal", "trail", "rod", "nodes", "magnetic", "contact",
-// "friction", "drag", "hud", "legend".
+// "lumen", "walls", "path", "start_goal", "trail", "rod", "nodes", "supports", "magnetic",
+// "contact", "friction", "drag", "hud", "legend".
 const char* layer_name(Layer layer);
 std::optional<Layer> layer_from_name(const std::string& name);
 std::vector<std::string> all_layer_names();

@@ -20,14 +20,15 @@ namespace {
 using testing::ScratchDir;
 
 TEST(RenderView, LayerListsParseAndPrintBack) {
-  EXPECT_EQ(format_layer_list(LayerSet::defaults()), "lumen,walls,path,start_goal,trail,rod,magnetic,contact,hud,legend");
+  EXPECT_EQ(format_layer_list(LayerSet::defaults()),
+            "lumen,walls,path,start_goal,trail,rod,supports,magnetic,contact,hud,legend");
   EXPECT_EQ(parse_layer_list(format_layer_list(LayerSet::defaults())), LayerSet::defaults());
   EXPECT_EQ(parse_layer_list(""), LayerSet::none());
   const LayerSet some = parse_layer_list("rod,walls,nodes");
   EXPECT_TRUE(some.has(Layer::kRod) && some.has(Layer::kWalls) && some.has(Layer::kNodes));
   EXPECT_FALSE(some.has(Layer::kTrail));
   EXPECT_EQ(format_layer_list(hide_layers(LayerSet::defaults(), "trail,hud")),
-            "lumen,walls,path,start_goal,rod,magnetic,contact,legend");
+            "lumen,walls,path,start_goal,rod,supports,magnetic,contact,legend");
   try {
     parse_layer_list("rod,bogus");
     FAIL() << "an unknown layer was accepted";
@@ -82,11 +83,15 @@ void expect_layers_change_the_picture_as_their_content_says(const ScratchDir& di
 
 TEST(RenderView, ALayerChangesThePictureExactlyWhenTheLogHasContentForIt) {
   ScratchDir dir("view_layers");
-  SyntheticLogSpec every;  // a maze run that logs every force and the tip's reference
+  SyntheticLogSpec every;  // a maze run that logs every force and the tip's reference, its rod held
   every.friction_and_drag = true;
-  expect_layers_change_the_picture_as_their_content_says(dir, "every", every, synthetic_metadata(every));
-  EXPECT_EQ(layers_with_content(synthetic_metadata(every), FrameSource(dir / "every.vlog").header()),
-            parse_layer_list("lumen,walls,path,start_goal,trail,rod,nodes,magnetic,contact,friction,drag,hud,legend"));
+  LogMetadata held = synthetic_metadata(every);
+  held.boundary.clamp = ClampKind::kFirstEdge;
+  held.boundary.pinned = {12};
+  held.boundary.supports = {{25, SupportAxis::kX}};
+  expect_layers_change_the_picture_as_their_content_says(dir, "every", every, held);
+  EXPECT_EQ(layers_with_content(held, FrameSource(dir / "every.vlog").header()),
+            parse_layer_list("lumen,walls,path,start_goal,trail,rod,nodes,supports,magnetic,contact,friction,drag,hud,legend"));
 
   // No vessel, path, start or goal, and no force channels; bounds that frame the rod (as a free
   // rod logs them: a box round the lumen-toned rod read as a channel it was in).

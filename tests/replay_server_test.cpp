@@ -264,7 +264,8 @@ TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
   EXPECT_EQ(info["frames"], 101);
   EXPECT_DOUBLE_EQ(info["last_time"].get<double>(), 10.0);
   EXPECT_EQ(info["node_count"], 40);
-  // The synthetic log records no friction or drag: the page greys out those layers.
+  // The synthetic log records no friction or drag, and nothing holds its rod: the page greys out
+  // those layers.
   EXPECT_EQ(info["layers_with_content"], json({"lumen", "walls", "path", "start_goal", "trail", "rod", "nodes",
                                                "magnetic", "contact", "hud", "legend"}));
   EXPECT_EQ(info["growing"], true) << "a run directory without summary.json whose run holds its claim is being written";

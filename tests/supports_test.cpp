@@ -7,7 +7,12 @@
 
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
+#include "sim/io/log_metadata.h"
+#include "sim/io/run_log.h"
 #include "sim/io/scene_reader.h"
+#include "sim/run/run.h"
 #include "sim/run/compile.h"
 #include "sim/scene/input_error.h"
 #include "sim/step/model.h"
@@ -74,6 +79,52 @@ TEST(Supports, ReadWriteAndErrors) {
   Scene twice = s;
   twice.boundary.pinned = {-1};
   EXPECT_THROW(compile(twice), InputError) << "a node pinned and supported";
+}
+
+// A run's log says how its rod is held, node indices counted from the root, so pictures can draw
+// the clamp and supports (render/frame_painter.cpp); a log of a rod held by nothing says nothing.
+TEST(Supports, TheLogSaysHowTheRodIsHeld) {
+  Scene scene = test::cantilever(12);
+  scene.solver.mode = SolveMode::kDynamic;
+  scene.boundary.clamp = ClampKind::kFirstEdge;
+  scene.boundary.pinned = {5};
+  scene.boundary.supports = {{-1, SupportAxis::kX}, {-3, SupportAxis::kY}};
+  scene.boundary.prescribed = {{-4, Vec2(0.01, 0.0), Vec2::Zero(), 0.0}};
+  const std::string text = run_log_header(vascsim::Run(compile(scene))).metadata;
+  const BoundarySpec holds = read_log_metadata(text, "frames.vlog").boundary;
+  EXPECT_EQ(holds.clamp, ClampKind::kFirstEdge);
+  EXPECT_EQ(holds.pinned, std::vector<int>{5});
+  ASSERT_EQ(holds.supports.size(), 2u);
+  EXPECT_EQ(holds.supports[0].node, 11);
+  EXPECT_EQ(holds.supports[0].axis, SupportAxis::kX);
+  EXPECT_EQ(holds.supports[1].node, 9);
+  EXPECT_EQ(holds.supports[1].axis, SupportAxis::kY);
+  ASSERT_EQ(holds.prescribed.size(), 1u);
+  EXPECT_EQ(holds.prescribed[0].node, 8);
+  EXPECT_EQ(holds.prescribed[0].velocity, Vec2(0.01, 0.0));
+
+  scene.boundary = BoundarySpec{};
+  scene.boundary.pinned = {0};
+  scene.loads.gravity.enabled = true;
+  const BoundarySpec pinned = read_log_metadata(run_log_header(vascsim::Run(compile(scene))).metadata, "frames.vlog").boundary;
+  EXPECT_EQ(pinned.clamp, ClampKind::kNone);
+  EXPECT_EQ(pinned.pinned, std::vector<int>{0});
+
+  scene.boundary = BoundarySpec{};
+  const std::string free_rod = run_log_header(vascsim::Run(compile(scene))).metadata;
+  EXPECT_TRUE(read_log_metadata(free_rod, "frames.vlog").boundary.empty());
+  EXPECT_FALSE(nlohmann::json::parse(free_rod).contains("boundary")) << "a rod held by nothing adds a key to its log";
+
+  // A log's boundary is checked as it is read, naming the field.
+  for (const char* bad : {R"({"boundary": {"pinned": ["a"]}})", R"({"boundary": {"supports": [{"node": 2, "hold": "z"}]}})",
+                          R"({"boundary": {"clamp": "glued"}})"}) {
+    try {
+      read_log_metadata(bad, "run/frames.vlog");
+      ADD_FAILURE() << "read " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("run/frames.vlog (metadata): /boundary/"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/io/json_fields.h"
+#include "sim/io/scene_sections.h"
 #include "sim/scene/input_error.h"
 
 namespace vascsim {
@@ -50,6 +51,7 @@ std::string write_log_metadata(const LogMetadata& m) {
   j["goal"] = point(m.goal);
   j["rod"] = {{"outer_radius", m.rod_outer_radius}, {"length", m.rod_length}};
   j["output_interval"] = m.output_interval;
+  if (!m.boundary.empty()) j["boundary"] = io::write_boundary(m.boundary);
   j["provenance"] = {{"vascsim_version", m.vascsim_version}, {"commit", m.commit}, {"scene_hash", m.scene_hash}};
   return j.dump();
 }
@@ -91,6 +93,10 @@ LogMetadata read_log_metadata(const std::string& text, const std::string& label)
   m.rod_length = rod.number("length", 0.0, 0.0, 1e6);
   rod.finish();
   m.output_interval = in.number("output_interval", 0.0, 0.0, 1e9);
+  if (in.raw("boundary")) {
+    io::FieldReader boundary = in.object("boundary");
+    io::read_boundary(boundary, m.boundary);
+  }
   if (const json* p = in.raw("provenance"); p && p->is_object()) {
     auto text = [&](const char* key) { return p->contains(key) && (*p)[key].is_string() ? (*p)[key].get<std::string>() : ""; };
     m.vascsim_version = text("vascsim_version");

@@ -8,6 +8,7 @@
 
 #include "sim/env/geometry.h"
 #include "sim/log/channel_names.h"
+#include "sim/scene/scene.h"
 
 namespace vascsim {
 
@@ -26,6 +27,10 @@ struct LogMetadata {
   double rod_outer_radius = 0.0;    // m
   double rod_length = 0.0;          // m
   double output_interval = 0.0;     // s, nominal time between frames
+  // How the rod is held: the scene's boundary, node indices resolved to 0..N-1, so pictures can
+  // draw the clamp, pins and supports. Empty for a rod held by nothing (every maze and vessel
+  // scene) and in logs written before it was recorded.
+  BoundarySpec boundary;
   // Provenance (sim/io/provenance.h): empty in logs written before it was recorded.
   std::string vascsim_version, commit, scene_hash;
 };

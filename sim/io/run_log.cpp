@@ -17,6 +17,10 @@ LogMetadata run_log_metadata(const Run& run) {
   m.rod_outer_radius = scene.rod.outer_radius;
   m.rod_length = scene.rod.length;
   m.output_interval = scene.run.output_interval;
+  m.boundary = scene.boundary;
+  for (int& i : m.boundary.pinned) i = resolve_node(i, scene.rod.nodes);
+  for (SupportSpec& s : m.boundary.supports) s.node = resolve_node(s.node, scene.rod.nodes);
+  for (PrescribedMotionSpec& p : m.boundary.prescribed) p.node = resolve_node(p.node, scene.rod.nodes);
   if (const Navigation* nav = run.navigation()) {
     m.bounds = nav->environment.bounds;
     m.walls = nav->environment.walls;

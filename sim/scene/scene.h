@@ -149,6 +149,7 @@ struct BoundarySpec {
   std::vector<int> pinned;  // nodes held at their initial position (free to rotate)
   std::vector<SupportSpec> supports;
   std::vector<PrescribedMotionSpec> prescribed;
+  bool empty() const { return clamp == ClampKind::kNone && pinned.empty() && supports.empty() && prescribed.empty(); }
 };
 
 // Loads. Each kind is a force module that exists in the Model only when switched on.

@@ -289,7 +289,8 @@ def check_load(page, shots):
     checked = page.js('return Array.from(document.querySelectorAll("#layers input:checked")).map(c => c.value)')
     R.check(sorted(checked) == sorted(info['default_layers']), 'the checked layer boxes are the default layers', f'{checked}')
     greyed = page.js('return Array.from(document.querySelectorAll("#layers input:disabled")).map(c => c.value)')
-    R.check(greyed == [], 'a maze run draws something for every layer: no layer box is greyed out', f'{greyed}')
+    R.check(greyed == ['supports'], 'a maze run draws something for every layer but the supports (nothing holds its rod):'
+            ' only that box is greyed out', f'{greyed}')
     img = page.js('const i = document.getElementById("frame-a"); return [i.naturalWidth, i.naturalHeight];')
     p = page.frame_params()
     R.check(img[0] == int(p['width']) and img[1] == int(p['height']) and int(p['width']) % 2 == 0 and int(p['height']) % 2 == 0,
@@ -883,7 +884,9 @@ def check_stopped_run(driver, exe, shots, workdir):
     """A run stopped by Ctrl-C reads as stopped, not failed: the summary's result, the note under
     it (which goes to the last frame) and the timeline's mark say so."""
     # Gravity of zero logs force/external, flat zero: the plot checked below.
-    run, proc = start_long_run(exe, workdir, 'stopped', loads={'gravity': {'enabled': True, 'acceleration': [0, 0]}})
+    # Clamped at its root and on a roller at its tip: the supports layer draws both.
+    run, proc = start_long_run(exe, workdir, 'stopped', loads={'gravity': {'enabled': True, 'acceleration': [0, 0]}},
+                               boundary={'clamp': 'first_edge', 'supports': [{'node': -1, 'hold': 'y'}]})
     time.sleep(0.3)
     proc.send_signal(signal.SIGINT)
     _, err = proc.communicate(timeout=60)
@@ -916,6 +919,9 @@ def check_stopped_run(driver, exe, shots, workdir):
             ' return false;'), 'the force/external plot to draw its axis').split()
         R.check(len(ticks) >= 2 and float(ticks[-1]) >= 0.5 and all(len(t.partition('.')[2]) <= 1 for t in ticks),
                 'stopped run: a flat zero is plotted on an axis of one display unit', repr(ticks))
+        supports = page.js('const c = document.getElementById("layer-supports"); return [c.disabled, c.checked];')
+        R.check(supports == [False, True], 'stopped run: the supports layer of a clamped rod is on and not greyed out',
+                repr(supports))
         page.shot(shots, 'stopped.png')
         page.collect_log()
         R.check(not page.severe, 'no JS errors in the browser log (stopped run)', '; '.join(page.severe[:5]))
