@@ -641,7 +641,10 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     if (!f.drag.empty())
       arrow_entry(arrow_scale(Layer::kDrag), scales_.drag_reference, kDrag, contact_arrow_width(H), "Drag force");
     if (!fits(1)) return;
-    const float r = std::max(0.5f * float(view_.min_rod_width_px), static_cast<float>(meta_.rod_outer_radius * scale_));
+    // The rod as thick as the map draws it, up to the height of its row: zoomed in, a true-width
+    // symbol became a disc over the entries above and below (its label gives the diameter).
+    const float r = std::min(std::max(0.5f * float(view_.min_rod_width_px), static_cast<float>(meta_.rod_outer_radius * scale_)),
+                             0.35f * fs);
     c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kRodEdge);
     c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kRod);
     std::snprintf(buf, sizeof buf, "catheter \xC3\x98 %.2f mm", 2e3 * meta_.rod_outer_radius);

@@ -4,6 +4,9 @@
 // does not fit is left out, the force arrows last among the legend entries.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -129,6 +132,44 @@ TEST(RenderPanelLayout, EightHudRowsStayInsideAShortFrame) {
 // The HUD shows what the log records: a catheter only pushed from its root (control.mode
 // "none") showed a "Tip error" of 95 mm to a target nothing followed and a magnetic force of
 // zero, and not the drive's push; a free rod's showed three rows of "n/a".
+// Zoomed in, the rod is drawn tens of pixels thick; its legend symbol stays within its own row
+// (at its true width it was a disc over the rule above and the trail entry below).
+TEST(RenderPanelLayout, TheRodsLegendSymbolStaysInItsRowWhenZoomedIn) {
+  ScratchDir dir("panel_zoomed");
+  SyntheticLogSpec spec;
+  spec.rod_radius = 0.002;
+  FrameSource source(testing::make_run(dir, spec));
+  FrameState state;
+  source.frame(source.frame_count() - 1, state);
+  for (const double zoom : {1.0, 8.0, 40.0}) {
+    View view;
+    view.camera = CameraMode::kFollow;
+    view.zoom = zoom;
+    FramePainter painter(source.metadata(), view, choose_force_scales(source, view), state);
+    Canvas canvas(view.width, view.height);
+    painter.paint(canvas, state, {});
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(view.width) * view.height * 4);
+    canvas.finish(rgba.data());
+    const FramePainter::PanelItem* rod = nullptr;
+    for (const auto& item : painter.panel_items())
+      if (item.label.rfind("catheter", 0) == 0) rod = &item;
+    ASSERT_NE(rod, nullptr) << "zoom " << zoom;
+    // The rod's fill colour (palette kRod) anywhere in the panel's column of symbols.
+    int top = view.height, bottom = -1;
+    for (int y = 0; y < view.height; ++y)
+      for (int x = static_cast<int>(rod->left); x < static_cast<int>(rod->left) + 40 && x < view.width; ++x) {
+        const std::uint8_t* c = &rgba[(static_cast<std::size_t>(y) * view.width + x) * 4];
+        if (std::abs(c[0] - 0x1B) < 3 && std::abs(c[1] - 0x3A) < 3 && std::abs(c[2] - 0x5C) < 3) {
+          top = std::min(top, y);
+          bottom = std::max(bottom, y);
+        }
+      }
+    ASSERT_GE(bottom, 0) << "zoom " << zoom << ": no rod symbol in the legend";
+    EXPECT_GE(top, static_cast<int>(std::floor(rod->top))) << "zoom " << zoom;
+    EXPECT_LE(bottom, static_cast<int>(std::ceil(rod->bottom))) << "zoom " << zoom;
+  }
+}
+
 TEST(RenderPanelLayout, TheHudShowsWhatTheLogRecords) {
   ScratchDir dir("panel_hud_rows");
   const auto hud_of = [&](const SyntheticLogSpec& spec, const std::string& name) {
