@@ -1,7 +1,8 @@
 // What a vascsim JSON file is, from its "format", for the error a file of one kind given where
 // another was expected gets: `vascsim run` of the maze that `vascsim maze` wrote, `vascsim sweep`
 // of a scene. The message then says what the file is and what to do with it, not only that its
-// format is not the one expected.
+// format is not the one expected. Internal to the io layer, like json_fields.h (it includes
+// nlohmann-json).
 #pragma once
 
 #include <string>
