@@ -377,9 +377,13 @@ void FramePainter::paint_lumen(Canvas& c, const glm::dmat3& m) {
   c.region(lumen_px_, outline_px_, kLumen);
 }
 
+float FramePainter::rod_radius_px() const {
+  return std::max(static_cast<float>(meta_.rod_outer_radius * scale_), 0.5f * float(view_.min_rod_width_px));
+}
+
 // The rod at its true radius, never thinner than min_rod_width_px, with a dark edge.
 void FramePainter::paint_rod(Canvas& c, const glm::dmat3& m, const FrameState& f, Rgba body, Rgba edge, Rgba tip) {
-  const float r = std::max(static_cast<float>(meta_.rod_outer_radius * scale_), 0.5f * float(view_.min_rod_width_px));
+  const float r = rod_radius_px();
   scratch_.clear();
   for (std::size_t i = 0; i < f.node_count(); ++i) scratch_.push_back(apply(m, f.node(i)));
   if (scratch_.empty()) return;
@@ -397,7 +401,7 @@ void FramePainter::paint_rod(Canvas& c, const glm::dmat3& m, const FrameState& f
 void FramePainter::paint_supports(Canvas& c) const {
   const BoundarySpec& holds = meta_.boundary;
   const std::size_t n = scratch_.size();
-  const float rod = std::max(static_cast<float>(meta_.rod_outer_radius * scale_), 0.5f * float(view_.min_rod_width_px));
+  const float rod = rod_radius_px();
   const float h = static_cast<float>(view_.height);
   const float u = std::clamp(2.5f * rod, std::max(5.0f, h / 72.0f), std::max(5.0f, h / 20.0f));
   const float line = std::max(1.0f, 0.15f * u);
@@ -643,8 +647,7 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
     if (!fits(1)) return;
     // The rod as thick as the map draws it, up to the height of its row: zoomed in, a true-width
     // symbol became a disc over the entries above and below (its label gives the diameter).
-    const float r = std::min(std::max(0.5f * float(view_.min_rod_width_px), static_cast<float>(meta_.rod_outer_radius * scale_)),
-                             0.35f * fs);
+    const float r = std::min(rod_radius_px(), 0.35f * fs);
     c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r + 1.0f, kRodEdge);
     c.capsule({lx + r + 1, y + mid}, {sym_end - r - 1, y + mid}, r, kRod);
     std::snprintf(buf, sizeof buf, "catheter \xC3\x98 %.2f mm", 2e3 * meta_.rod_outer_radius);

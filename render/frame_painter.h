@@ -117,6 +117,8 @@ class FramePainter {
   void paint_world(Canvas& c, const glm::dmat3& m, const FrameState& f, const std::vector<Vec2>& trail,
                    const FrameState* overlay);
   void paint_lumen(Canvas& c, const glm::dmat3& m);
+  // px, the rod as the map draws it: its true radius, never thinner than min_rod_width_px.
+  float rod_radius_px() const;
   void paint_rod(Canvas& c, const glm::dmat3& m, const FrameState& f, Rgba body, Rgba edge, Rgba tip);
   void paint_supports(Canvas& c) const;
   glm::vec2 arrow_vector(const Vec2& px, double max_px) const;
