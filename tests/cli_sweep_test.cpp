@@ -101,6 +101,8 @@ TEST(SweepCli, ASweepOfRunsPushedFromTheirRootTabulatesTheDrivesPush) {
     const nlohmann::json summary =
         nlohmann::json::parse(read_text(dir + "/speed/runs/000" + std::to_string(i) + "/summary.json"));
     EXPECT_EQ(summary["navigation"]["control_mode"], "none");
+    EXPECT_TRUE(summary["navigation"]["tip_error_rms"].is_null() && summary["navigation"]["tip_error_max"].is_null())
+        << "a tip error nothing steered, in run " << i << "'s summary: " << summary["navigation"].dump();
     EXPECT_EQ(csv_cell(csv, i, "tip_error_rms_m"), "") << "nothing steered the tip of run " << i;
     EXPECT_EQ(std::stod(csv_cell(csv, i, "feed_force_max_N")),
               summary["navigation"]["advance"]["feed_force_max"].get<double>()) << i;

@@ -79,11 +79,15 @@ std::string run_summary_json(const Scene& scene, const Run& run) {
   if (run.navigation()) {
     json contact_time = json::array();
     for (double t : s.contact_time) contact_time.push_back(t);
+    // A rod only pushed from its root has no tip error: the distance to a target that nothing
+    // steered towards would read as a tracking error (its frame log leaves tip/error out too).
+    const bool steered = scene.control.mode != ActuationMode::kNone;
+    const json no_value(nullptr);
     j["navigation"] = {{"control_mode", io::actuation_mode_name(scene.control.mode)},
                        {"goal_reached", s.goal_reached},
                        {"goal_time", number(s.goal_time)},
-                       {"tip_error_rms", s.tip_error_rms},
-                       {"tip_error_max", s.tip_error_max},
+                       {"tip_error_rms", steered ? json(s.tip_error_rms) : no_value},
+                       {"tip_error_max", steered ? json(s.tip_error_max) : no_value},
                        {"actuation_force_max", s.actuation_force_max},
                        {"actuation_force_mean", s.actuation_force_mean},
                        {"contact_force_max", s.contact_force_max},

@@ -71,8 +71,8 @@ void read_summary(const json& s, const std::string& label, RunOutcome& out) {
   for (std::size_t k = 0; k < kMetricCount; ++k) out.metrics[k] = number_at(s, pointers[k]);
   const json::json_pointer mode("/navigation/control_mode");
   if (s.contains(mode) && s.at(mode).is_string()) out.control_mode = s.at(mode).get<std::string>();
-  // A rod only pushed from its root has no tip error: its summary's is the distance to a target
-  // that nothing steered towards (its frame log leaves tip/error out).
+  // A rod only pushed from its root has no tip error: summaries written before they said so
+  // (null) carry the distance to a target that nothing steered towards.
   if (out.control_mode == "none") out.metrics[kTipErrorRms] = out.metrics[kTipErrorMax] = kNaN;
   const double wall = number_at(s, "/wall_time"), rtf = number_at(s, "/real_time_factor");
   out.wall_time = std::isfinite(wall) ? wall : -1;
