@@ -115,6 +115,26 @@ TEST(Supports, TheLogSaysHowTheRodIsHeld) {
   EXPECT_TRUE(read_log_metadata(free_rod, "frames.vlog").boundary.empty());
   EXPECT_FALSE(nlohmann::json::parse(free_rod).contains("boundary")) << "a rod held by nothing adds a key to its log";
 
+  // A newer writer may add keys (a 3D rod's supports, say): an older reader draws what it knows
+  // rather than refusing the log, while a scene with the same key is refused as a typo.
+  const char* newer = R"({"rod": {"outer_radius": 0.001, "length": 0.2, "inner_radius": 0.0005},
+      "boundary": {"clamp": "first_edge", "twist": "locked", "supports": [{"node": 3, "hold": "x", "hold_z": true}],
+                   "prescribed": [{"node": 4, "velocity": [0.01, 0], "angular_velocity": 2}]}})";
+  const LogMetadata read_newer = read_log_metadata(newer, "frames.vlog");
+  EXPECT_EQ(read_newer.rod_outer_radius, 0.001);
+  EXPECT_EQ(read_newer.boundary.clamp, ClampKind::kFirstEdge);
+  ASSERT_EQ(read_newer.boundary.supports.size(), 1u);
+  EXPECT_EQ(read_newer.boundary.supports[0].axis, SupportAxis::kX);
+  ASSERT_EQ(read_newer.boundary.prescribed.size(), 1u);
+  EXPECT_EQ(read_newer.boundary.prescribed[0].velocity, Vec2(0.01, 0.0));
+  try {
+    read_scene_text(R"({"format": "vascsim-scene/1", "boundary": {"clamp": "first_edge", "twist": "locked"}})",
+                    "scene.json");
+    ADD_FAILURE() << "a scene's unknown boundary key was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/boundary/twist: unknown key"), std::string::npos) << e.what();
+  }
+
   // A log's boundary is checked as it is read, naming the field.
   for (const char* bad : {R"({"boundary": {"pinned": ["a"]}})", R"({"boundary": {"supports": [{"node": 2, "hold": "z"}]}})",
                           R"({"boundary": {"clamp": "glued"}})"}) {

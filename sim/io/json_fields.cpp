@@ -216,8 +216,8 @@ std::string first_inexact_number(const std::string& text) {
   return finder.found;
 }
 
-FieldReader::FieldReader(const json& object, std::string file, std::string pointer)
-    : object_(&object), file_(std::move(file)), pointer_(std::move(pointer)) {
+FieldReader::FieldReader(const json& object, std::string file, std::string pointer, UnknownKeys unknown_keys)
+    : object_(&object), file_(std::move(file)), pointer_(std::move(pointer)), unknown_keys_(unknown_keys) {
   if (!object.is_object())
     throw InputError(file_ + ": " + (pointer_.empty() ? "/" : pointer_) + ": expected an object, got " + describe(object));
 }
@@ -321,14 +321,18 @@ FieldReader FieldReader::object(const std::string& key) {
   const json* v = lookup(key);
   if (!v) {
     static const json kEmpty = json::object();
-    return FieldReader(kEmpty, file_, pointer_of(key));
+    return nested(kEmpty, key);
   }
   if (!v->is_object()) fail(key, "an object", *v);
-  return FieldReader(*v, file_, pointer_of(key));
+  return nested(*v, key);
+}
+
+FieldReader FieldReader::nested(const json& value, const std::string& key) const {
+  return FieldReader(value, file_, pointer_of(key), unknown_keys_);
 }
 
 void FieldReader::finish() const {
-  if (!object_) return;
+  if (!object_ || unknown_keys_ == UnknownKeys::kIgnore) return;
   for (auto it = object_->begin(); it != object_->end(); ++it) {
     if (known_.count(it.key())) continue;
     std::string keys;

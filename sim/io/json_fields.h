@@ -2,7 +2,9 @@
 // FieldReader walks one JSON object of a scene file and validates each field as it is read, so
 // every error names the file, the JSON pointer of the field and what was expected:
 //   scenes/x.json: /maze/rows: expected an integer in [1, 200], got 0
-// finish() then rejects any key that no one asked for (a typo must not be silently ignored).
+// finish() then rejects any key that no one asked for (a typo must not be silently ignored),
+// except in a file a newer vascsim may have written with keys this one does not know (a log's
+// metadata): there the reader is made with UnknownKeys::kIgnore, which its nested readers keep.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -18,10 +20,13 @@ namespace vascsim::io {
 // so the key "/control/kp" of a sweep's axes is the token "~1control~1kp".
 std::string escape_pointer_token(const std::string& key);
 
+enum class UnknownKeys { kRefuse, kIgnore };
+
 class FieldReader {
  public:
   // `object` must outlive the reader. Throws InputError if it is not a JSON object.
-  FieldReader(const nlohmann::json& object, std::string file, std::string pointer);
+  FieldReader(const nlohmann::json& object, std::string file, std::string pointer,
+              UnknownKeys unknown_keys = UnknownKeys::kRefuse);
 
   bool has(const std::string& key) const;
   // Optional fields: return `fallback` when absent, validate when present.
@@ -37,9 +42,11 @@ class FieldReader {
   Vec2 vec2(const std::string& key, const Vec2& fallback, double max_abs = 1e300);
   // A nested object: the returned reader is empty (every lookup falls back) when the key is absent.
   FieldReader object(const std::string& key);
+  // A reader of `value` found at `key` below this object (an item of a list: "supports/0").
+  FieldReader nested(const nlohmann::json& value, const std::string& key) const;
   // The raw value of a field that the caller validates itself, marking it as known.
   const nlohmann::json* raw(const std::string& key);
-  // Throws for the first key not read by any accessor above.
+  // Throws for the first key not read by any accessor above (unless unknown keys are ignored).
   void finish() const;
 
   // `key` may be a path below this object ("pinned/0"): it is not escaped.
@@ -53,6 +60,7 @@ class FieldReader {
   const nlohmann::json* object_;  // null for an absent optional object
   std::string file_;
   std::string pointer_;
+  UnknownKeys unknown_keys_;
   mutable std::set<std::string> known_;  // keys read or asked about (has)
 };
 

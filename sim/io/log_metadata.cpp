@@ -59,7 +59,9 @@ std::string write_log_metadata(const LogMetadata& m) {
 LogMetadata read_log_metadata(const std::string& text, const std::string& label) {
   const json j = io::parse_json_strictly(text, label + " (metadata)");
   LogMetadata m;
-  io::FieldReader in(j, label + " (metadata)", "");
+  // Newer writers may add keys, here or in a nested object; an older reader ignores them rather
+  // than refusing the log (values it knows are still checked).
+  io::FieldReader in(j, label + " (metadata)", "", io::UnknownKeys::kIgnore);
   m.title = in.text("title", "");
   if (const json* scene = in.raw("scene"); scene && !scene->is_null()) m.scene_json = scene->dump(2);
   if (const json* b = in.raw("bounds")) {
@@ -91,7 +93,6 @@ LogMetadata read_log_metadata(const std::string& text, const std::string& label)
   auto rod = in.object("rod");
   m.rod_outer_radius = rod.number("outer_radius", 0.0, 0.0, 1e6);
   m.rod_length = rod.number("length", 0.0, 0.0, 1e6);
-  rod.finish();
   m.output_interval = in.number("output_interval", 0.0, 0.0, 1e9);
   if (in.raw("boundary")) {
     io::FieldReader boundary = in.object("boundary");
@@ -103,7 +104,6 @@ LogMetadata read_log_metadata(const std::string& text, const std::string& label)
     m.commit = text("commit");
     m.scene_hash = text("scene_hash");
   }
-  // Newer writers may add keys; an older reader ignores them rather than refusing the log.
   return m;
 }
 

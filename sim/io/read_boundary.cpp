@@ -40,7 +40,7 @@ void read_boundary(FieldReader& in, BoundarySpec& out) {
     if (!list->is_array()) in.fail("supports", "an array of objects", *list);
     out.supports.clear();
     for (std::size_t i = 0; i < list->size(); ++i) {
-      FieldReader item((*list)[i], in.file(), in.pointer_of("supports/" + std::to_string(i)));
+      FieldReader item = in.nested((*list)[i], "supports/" + std::to_string(i));
       SupportSpec support;
       support.node = read_node(item, "node", support.node);
       support.axis = item.choice("hold", "y", {"x", "y"}) == "x" ? SupportAxis::kX : SupportAxis::kY;
@@ -52,7 +52,7 @@ void read_boundary(FieldReader& in, BoundarySpec& out) {
     if (!list->is_array()) in.fail("prescribed", "an array of objects", *list);
     out.prescribed.clear();
     for (std::size_t i = 0; i < list->size(); ++i) {
-      FieldReader item((*list)[i], in.file(), in.pointer_of("prescribed/" + std::to_string(i)));
+      FieldReader item = in.nested((*list)[i], "prescribed/" + std::to_string(i));
       PrescribedMotionSpec p;
       p.node = read_node(item, "node", p.node);
       p.velocity = item.vec2("velocity", p.velocity, kMaxSpeed);

@@ -57,7 +57,7 @@ void read_loads(FieldReader& in, LoadSpec& out) {
     if (!list->is_array()) in.fail("bodies", "an array of objects", *list);
     out.bodies.clear();
     for (std::size_t i = 0; i < list->size(); ++i) {
-      FieldReader item((*list)[i], in.file(), in.pointer_of("bodies/" + std::to_string(i)));
+      FieldReader item = in.nested((*list)[i], "bodies/" + std::to_string(i));
       BodySpec b;
       b.node = static_cast<int>(item.integer("node", b.node, -1000000, 999999));
       b.mass = item.number("mass", b.mass, 0.0, 1e6);
@@ -71,7 +71,7 @@ void read_loads(FieldReader& in, LoadSpec& out) {
     if (!list->is_array()) in.fail("point", "an array of objects", *list);
     out.point_loads.clear();
     for (std::size_t i = 0; i < list->size(); ++i) {
-      FieldReader item((*list)[i], in.file(), in.pointer_of("point/" + std::to_string(i)));
+      FieldReader item = in.nested((*list)[i], "point/" + std::to_string(i));
       PointLoadSpec p;
       p.node = static_cast<int>(item.integer("node", p.node, -1000000, 999999));
       p.force = item.vec2("force", p.force, kMaxForce);

@@ -33,7 +33,7 @@ std::vector<Item> read_list(FieldReader& in, const std::string& key, const std::
   if (!list->is_array()) in.fail(key, expected, *list);
   if (list->size() > max_items) in.fail(key, expected + ", at most " + std::to_string(max_items), *list);
   for (std::size_t i = 0; i < list->size(); ++i) {
-    FieldReader item(list->at(i), in.file(), in.pointer_of(key) + "/" + std::to_string(i));
+    FieldReader item = in.nested(list->at(i), key + "/" + std::to_string(i));
     if (!list->at(i).is_object()) item.fail("", expected, list->at(i));
     out.push_back(reader(item));
     item.finish();
