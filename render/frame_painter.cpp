@@ -114,6 +114,7 @@ constexpr Rgba kFriction = hex(0x2B8A3E);
 constexpr Rgba kDrag = hex(0x0C8599);
 constexpr Rgba kNode = hex(0xFFFFFF);
 constexpr Rgba kSupport = hex(0x343A40);
+const glm::vec2 kDownOnScreen(0, 1), kLeftOnScreen(-1, 0);
 
 }  // namespace
 
@@ -392,57 +393,87 @@ void FramePainter::paint_rod(Canvas& c, const glm::dmat3& m, const FrameState& f
   c.disc(scratch_.back(), r + 1.5f, tip);
 }
 
-// The engineering symbols of how the rod is held, at the held nodes (scratch_) where they are now:
-// a wall hatched on its far side across a clamp's root; a triangle on hatched ground under a pin;
-// the triangle on rollers for a support, under the node for one that holds y (x slides), to its
-// left for one that holds x (y slides); a ring round a node moved kinematically. Sized from the
-// rod's drawn width, so they read at any zoom without hiding a short rod, and never smaller than
-// the start and goal markers, so a thin rod's clamp still reads in a whole-frame view.
+// The symbols of how the rod is held (render/support_symbols.h), at the held nodes (scratch_) where
+// they are now: a support holding y stands under its node (x slides), one holding x to its left
+// (y slides). Sized from the rod's drawn width, so they read at any zoom without hiding a short
+// rod, and never smaller than the start and goal markers, so a thin rod's clamp still reads in a
+// whole-frame view.
 void FramePainter::paint_supports(Canvas& c) const {
   const BoundarySpec& holds = meta_.boundary;
   const std::size_t n = scratch_.size();
-  const float rod = rod_radius_px();
   const float h = static_cast<float>(view_.height);
-  const float u = std::clamp(2.5f * rod, std::max(5.0f, h / 72.0f), std::max(5.0f, h / 20.0f));
-  const float line = std::max(1.0f, 0.15f * u);
+  const float u = std::clamp(2.5f * rod_radius_px(), std::max(5.0f, h / 72.0f), std::max(5.0f, h / 20.0f));
+  const SupportPen pen{u, std::max(1.0f, 0.15f * u), kSupport, kNode};
   // A node index outside the rod (a hand-edited log) draws nothing.
   const auto at = [&](int node) -> const glm::vec2* { return node >= 0 && std::size_t(node) < n ? &scratch_[node] : nullptr; };
-  const auto hatched_line = [&](glm::vec2 centre, glm::vec2 along, float half, glm::vec2 away) {
-    c.capsule(centre - half * along, centre + half * along, 0.5f * line, kSupport);
-    for (int k = 0; k <= 4; ++k) {
-      const glm::vec2 a = centre + (-half + 0.5f * half * static_cast<float>(k)) * along;
-      c.capsule(a, a + 0.7f * u * (away - along), 0.3f * line, kSupport);
-    }
-  };
   if (holds.clamp != ClampKind::kNone && n >= 2) {
     const glm::vec2 d = scratch_[1] - scratch_[0];
     const glm::vec2 along = glm::length(d) > 0 ? glm::normalize(d) : glm::vec2(1, 0);
-    const glm::vec2 across(-along.y, along.x);
-    const glm::vec2 root = holds.clamp == ClampKind::kCentred ? 0.5f * (scratch_[0] + scratch_[1]) : scratch_[0];
-    hatched_line(root, across, 1.6f * u, -along);
-    c.capsule(root - 1.6f * u * across, root + 1.6f * u * across, 1.3f * line, kSupport);
+    draw_clamp(c, holds.clamp == ClampKind::kCentred ? 0.5f * (scratch_[0] + scratch_[1]) : scratch_[0], along, pen);
   }
-  // `down`: from the node to the ground the symbol stands on (screen, unit).
-  const auto stand = [&](glm::vec2 apex, glm::vec2 down, bool rollers) {
-    const glm::vec2 side(-down.y, down.x);
-    const glm::vec2 base = apex + 1.4f * u * down;
-    c.triangle(apex, base + 0.8f * u * side, base - 0.8f * u * side, kSupport);
-    glm::vec2 ground = base + 0.5f * line * down;
-    if (rollers) {
-      const float r = 0.25f * u;
-      for (float s : {-0.45f, 0.45f}) c.disc(base + s * u * side + r * down, r, kSupport);
-      ground = base + (2 * r + line) * down;
-    }
-    hatched_line(ground, side, 1.1f * u, down);
-    c.disc(apex, 0.3f * u, kSupport);
-    c.disc(apex, 0.3f * u - line, kNode);
-  };
   for (int node : holds.pinned)
-    if (const glm::vec2* p = at(node)) stand(*p, {0, 1}, false);
+    if (const glm::vec2* p = at(node)) draw_stand(c, *p, kDownOnScreen, false, pen);
   for (const SupportSpec& s : holds.supports)
-    if (const glm::vec2* p = at(s.node)) stand(*p, s.axis == SupportAxis::kY ? glm::vec2(0, 1) : glm::vec2(-1, 0), true);
+    if (const glm::vec2* p = at(s.node)) draw_stand(c, *p, s.axis == SupportAxis::kY ? kDownOnScreen : kLeftOnScreen, true, pen);
   for (const PrescribedMotionSpec& moved : holds.prescribed)
-    if (const glm::vec2* p = at(moved.node)) c.ring(*p, 0.8f * u, line, kSupport);
+    if (const glm::vec2* p = at(moved.node)) draw_moved_ring(c, *p, pen);
+}
+
+// The kinds of support the map draws (those at nodes of the rod), in the legend's order.
+std::vector<SupportKind> FramePainter::supports_drawn(std::size_t nodes) const {
+  const BoundarySpec& holds = meta_.boundary;
+  const auto in_rod = [&](int node) { return node >= 0 && std::size_t(node) < nodes; };
+  const auto held_in = [&](SupportAxis axis) {
+    return std::any_of(holds.supports.begin(), holds.supports.end(),
+                       [&](const SupportSpec& s) { return s.axis == axis && in_rod(s.node); });
+  };
+  std::vector<SupportKind> kinds;
+  if (holds.clamp != ClampKind::kNone && nodes >= 2) kinds.push_back(SupportKind::kClamp);
+  if (std::any_of(holds.pinned.begin(), holds.pinned.end(), in_rod)) kinds.push_back(SupportKind::kPin);
+  if (held_in(SupportAxis::kY)) kinds.push_back(SupportKind::kHeldInY);
+  if (held_in(SupportAxis::kX)) kinds.push_back(SupportKind::kHeldInX);
+  if (std::any_of(holds.prescribed.begin(), holds.prescribed.end(),
+                  [&](const PrescribedMotionSpec& p) { return in_rod(p.node); }))
+    kinds.push_back(SupportKind::kMoved);
+  return kinds;
+}
+
+// A support's legend symbol in the row whose top left corner is `top_left` (a row is 1.45 font
+// sizes high): the map's symbol on a stub of rod, sized to fit the row.
+void FramePainter::paint_support_key(Canvas& c, SupportKind kind, glm::vec2 top_left, int fs) const {
+  const float size = 0.42f * static_cast<float>(fs);
+  const SupportPen pen{size, std::max(1.0f, 0.15f * size), kSupport, kNode};
+  const float x0 = top_left.x, x1 = x0 + 2.2f * fs, mid = top_left.y + 0.65f * fs;
+  // Thinner than the catheter's own entry: the symbol is what this entry shows.
+  const float stub = std::min(rod_radius_px(), 0.12f * fs);
+  const auto rod_stub = [&](glm::vec2 from) {
+    from.x = std::max(from.x, x0 + stub + 1.0f);
+    c.capsule(from, {x1 - stub - 1.0f, from.y}, stub + 1.0f, kRodEdge);
+    c.capsule(from, {x1 - stub - 1.0f, from.y}, stub, kRod);
+  };
+  // A standing symbol's node at the row's top, the symbol below it; one held in x at mid-row,
+  // its symbol to the left.
+  const glm::vec2 standing(x0 + 1.1f * fs, top_left.y + 0.3f * size + 1.0f);
+  const glm::vec2 left_of(x0 + stand_depth(true, pen), mid);
+  switch (kind) {
+    case SupportKind::kClamp:
+      rod_stub({x0 + 0.5f * fs, mid});
+      draw_clamp(c, {x0 + 0.5f * fs, mid}, {1, 0}, pen);
+      break;
+    case SupportKind::kPin:
+    case SupportKind::kHeldInY:
+      rod_stub({x0, standing.y});
+      draw_stand(c, standing, kDownOnScreen, kind == SupportKind::kHeldInY, pen);
+      break;
+    case SupportKind::kHeldInX:
+      rod_stub(left_of);
+      draw_stand(c, left_of, kLeftOnScreen, true, pen);
+      break;
+    case SupportKind::kMoved:
+      rod_stub({x0, mid});
+      draw_moved_ring(c, {x0 + 1.1f * fs, mid}, pen);
+      break;
+  }
 }
 
 // Per-node arrows from the node positions in scratch_.
@@ -669,6 +700,12 @@ void FramePainter::paint_panel(Canvas& c, const FrameState& f) {
       c.capsule({lx, y + mid}, {sym_end, y + mid}, 0.5f * std::max(2.0f, H / 300.0f), kTrail);
       entry("tip trail");
     }
+    if (view_.layers.has(Layer::kSupports))
+      for (SupportKind kind : supports_drawn(f.node_count())) {
+        if (!fits(1)) return;
+        paint_support_key(c, kind, {lx, y - fs}, fs);
+        entry(support_label(kind));
+      }
     if (!start_goal_drawn() || !fits(1)) return;
     const float mk = std::min(0.45f * fs, std::max(4.0f, H / 90.0f));
     c.disc({lx + mk, y + mid}, mk, kStart);

@@ -17,6 +17,7 @@
 #include "render/frame_source.h"
 #include "render/number_format.h"
 #include "render/polygon_fill.h"
+#include "render/support_symbols.h"
 #include "render/view.h"
 
 namespace vascsim::render {
@@ -121,6 +122,8 @@ class FramePainter {
   float rod_radius_px() const;
   void paint_rod(Canvas& c, const glm::dmat3& m, const FrameState& f, Rgba body, Rgba edge, Rgba tip);
   void paint_supports(Canvas& c) const;
+  std::vector<SupportKind> supports_drawn(std::size_t nodes) const;
+  void paint_support_key(Canvas& c, SupportKind kind, glm::vec2 top_left, int fs) const;
   glm::vec2 arrow_vector(const Vec2& px, double max_px) const;
   void paint_arrows(Canvas& c, const std::vector<double>& forces, double px_per_newton, double max_px, float width,
                     Rgba colour);

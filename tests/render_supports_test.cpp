@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "render/canvas.h"
 #include "render/frame_painter.h"
@@ -24,6 +26,7 @@ struct Picture {
   std::vector<std::uint8_t> rgba;
   std::vector<glm::dvec2> node_px;
   double rod_px = 0;  // the rod's drawn radius
+  std::vector<FramePainter::PanelItem> panel;
 
   // Pixels of ink (every channel darker than the light page) in the box [x0, x1) x [y0, y1),
   // offsets in rod radii from node `node`'s pixel.
@@ -42,7 +45,7 @@ struct Picture {
   }
 };
 
-Picture paint(const BoundarySpec& holds) {
+Picture paint(const BoundarySpec& holds, LayerSet layers = LayerSet::none().set(Layer::kSupports, true)) {
   LogMetadata meta;
   meta.bounds = {Vec2(0, 0), Vec2(1, 1)};
   meta.boundary = holds;
@@ -54,7 +57,7 @@ Picture paint(const BoundarySpec& holds) {
   View view;
   view.width = kWidth;
   view.height = kHeight;
-  view.layers = LayerSet::none().set(Layer::kSupports, true);
+  view.layers = layers;
   // A rod 4 px in radius: the symbols, a few rod widths across, stay apart at 34 px per edge.
   meta.rod_outer_radius = 4.0 / FramePainter(meta, view, ForceScales{}, frame).pixels_per_metre();
   FramePainter painter(meta, view, ForceScales{}, frame);
@@ -65,6 +68,7 @@ Picture paint(const BoundarySpec& holds) {
   canvas.finish(p.rgba.data());
   for (int i = 0; i < kNodes; ++i) p.node_px.push_back(painter.to_pixel(frame, frame.node(static_cast<std::size_t>(i))));
   p.rod_px = meta.rod_outer_radius * painter.pixels_per_metre();
+  p.panel = painter.panel_items();
   EXPECT_NEAR(p.rod_px, 4.0, 1e-9);
   return p;
 }
@@ -132,6 +136,45 @@ TEST(RenderSupports, NothingIsDrawnForARodHeldByNothingOrByNodesOutsideIt) {
   past_the_end.supports = {{kNodes + 5, SupportAxis::kX}};
   past_the_end.prescribed = {{1000000, Vec2::Zero(), Vec2::Zero(), 0.0}};
   EXPECT_EQ(paint(past_the_end).ink(glm::dvec2(0, 0), 0, kWidth / 4.0, 0, kHeight / 4.0), 0);
+}
+
+// The legend names each kind of support the map draws, once, with its symbol in the entry's row in
+// the map's ink; not a kind held only at nodes outside the rod, and nothing with the layer off.
+TEST(RenderSupports, TheLegendNamesEachKindTheMapDrawsWithItsSymbol) {
+  BoundarySpec holds;
+  holds.clamp = ClampKind::kFirstEdge;
+  holds.pinned = {4, 5, kNodes};
+  holds.supports = {{8, SupportAxis::kX}};
+  holds.prescribed = {{1000000, Vec2::Zero(), Vec2::Zero(), 0.0}};
+  const LayerSet with_legend = LayerSet::none().set(Layer::kSupports, true).set(Layer::kLegend, true);
+  const Picture p = paint(holds, with_legend);
+  std::vector<std::string> labels;
+  for (const auto& item : p.panel) {
+    if (std::string(item.what) != "legend" || item.label.rfind("catheter", 0) == 0) continue;
+    labels.push_back(item.label);
+    // The symbol's column: left of the text, which starts 2.8 font sizes in (an entry's box is
+    // 1.35 font sizes high).
+    const double symbol_right = item.left + 2.5 / 1.35 * (item.bottom - item.top);
+    int ink = 0;
+    for (int y = static_cast<int>(item.top); y < static_cast<int>(item.bottom); ++y)
+      for (int x = static_cast<int>(item.left); x < static_cast<int>(symbol_right); ++x) {
+        const std::uint8_t* c = &p.rgba[(static_cast<std::size_t>(y) * kWidth + x) * 4];
+        if (c[0] == 0x34 && c[1] == 0x3A && c[2] == 0x40) ++ink;  // the supports' ink (palette kSupport)
+      }
+    EXPECT_GT(ink, 10) << "no symbol beside \"" << item.label << "\"";
+  }
+  EXPECT_EQ(labels, (std::vector<std::string>{"clamped root", "pinned node", "held in x, slides in y"}));
+
+  holds.supports = {{1, SupportAxis::kY}};
+  holds.prescribed = {{2, Vec2(0.01, 0), Vec2::Zero(), 0.0}};
+  labels.clear();
+  for (const auto& item : paint(holds, with_legend).panel)
+    if (std::string(item.what) == "legend" && item.label.rfind("catheter", 0) != 0) labels.push_back(item.label);
+  EXPECT_EQ(labels, (std::vector<std::string>{"clamped root", "pinned node", "held in y, slides in x", "prescribed motion"}));
+
+  for (const auto& item : paint(holds, LayerSet::none().set(Layer::kLegend, true)).panel)
+    EXPECT_TRUE(std::string(item.what) != "legend" || item.label.rfind("catheter", 0) == 0)
+        << "\"" << item.label << "\" in the legend of a map without supports";
 }
 
 }  // namespace
