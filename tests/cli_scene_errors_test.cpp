@@ -101,7 +101,8 @@ TEST(SceneFiles, MissingFileAndInvalidJson) {
   const std::string dir = fresh_temp_dir("scene_files");
   CommandResult r = run_vascsim("maze --scene " + dir + "/absent.json --out " + dir + "/m.json");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find(dir + "/absent.json: cannot open scene file"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(dir + "/absent.json: cannot open scene file (No such file or directory)"), std::string::npos)
+      << r.output;
   write_text(dir + "/broken.json", "{\"maze\": {\"rows\": 5,");
   r = run_vascsim("maze --scene " + dir + "/broken.json --out " + dir + "/m.json");
   EXPECT_EQ(r.exit_code, 2);

@@ -1,7 +1,9 @@
 // vascsim sweep: parameter sweeps (docs/sweeps.md). Parses the options and hands over to
 // apps/sweep: the sweep directory, the local runner, the files for external engines, the merge.
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -92,7 +94,7 @@ void parse_shard(const std::string& text, std::size_t& i, std::size_t& n) {
 
 std::string read_text(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) throw InputError(path + ": cannot open sweep file");
+  if (!f) throw InputError(path + ": cannot open sweep file (" + std::strerror(errno) + ")");
   std::string text;
   char buffer[65536];
   std::size_t n;

@@ -2,6 +2,7 @@
 
 #include <zlib.h>
 
+#include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -81,7 +82,7 @@ std::string read_png_bytes(const std::string& path) {
   if (std::filesystem::file_size(path, ec) > kMaxPngBytes)
     throw InputError(path + ": cannot read PNG (larger than " + std::to_string(kMaxPngBytes >> 20) + " MiB)");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read PNG (cannot open it)");
+  if (!in) throw InputError(path + ": cannot read PNG (cannot open it: " + std::strerror(errno) + ")");
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (!in && !in.eof()) throw InputError(path + ": cannot read PNG (read error)");
   return bytes;

@@ -1,5 +1,7 @@
 #include "sim/io/scene_reader.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -101,7 +103,7 @@ Scene read_scene_file(const std::string& path) {
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
     throw InputError(path + ": not a regular file (a scene is read from a file, not a device or a pipe)");
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path + ": cannot open scene file");
+  if (!file) throw InputError(path + ": cannot open scene file (" + std::strerror(errno) + ")");
   const std::string text = io::read_at_most(file, kMaxSceneBytes);
   if (file.bad()) throw InputError(path + ": cannot read scene file");
   if (text.size() > kMaxSceneBytes)

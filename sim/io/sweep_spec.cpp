@@ -1,9 +1,11 @@
 #include "sim/io/sweep_spec.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -236,7 +238,7 @@ SweepSpec read_sweep_file(const std::string& path) {
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
     throw InputError(path + ": not a regular file (a sweep is read from a JSON file)");
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path + ": cannot open sweep file");
+  if (!file) throw InputError(path + ": cannot open sweep file (" + std::strerror(errno) + ")");
   const std::string text = io::read_at_most(file, kMaxSweepFileBytes);
   if (file.bad()) throw InputError(path + ": cannot read sweep file");
   if (text.size() > kMaxSweepFileBytes)
