@@ -287,17 +287,41 @@ TEST(ReplayServer, RunInfoNodesAndSeriesComeFromTheLog) {
   EXPECT_EQ(get_json(s, "/api/run")["state"], "killed") << "once killed, a run stays killed";
 
   render::FrameSource source(run);
-  render::FrameState frame;
+  render::FrameState frame, next;
   source.frame(42, frame);
-  // t between frames 42 and 43, nearer 42.
-  const json nodes = get_json(s, "/api/nodes?t=" + std::to_string(frame.time + 0.03));
-  EXPECT_EQ(nodes["frame"], 42);
-  ASSERT_EQ(nodes["nodes"].size(), 40u);
+  source.frame(43, next);
+  const auto exact = [](double t) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", t);
+    return std::string(text);
+  };
+  // At a logged frame's time: that frame's values.
+  const json at_frame = get_json(s, "/api/nodes?t=" + exact(frame.time));
+  EXPECT_EQ(at_frame["frame"], 42);
+  EXPECT_FALSE(at_frame.contains("between"));
+  ASSERT_EQ(at_frame["nodes"].size(), 40u);
   for (const int i : {0, 10, 39}) {
-    EXPECT_DOUBLE_EQ(nodes["nodes"][i]["position"][0].get<double>(), frame.position[2 * i]);
-    EXPECT_DOUBLE_EQ(nodes["nodes"][i]["position"][1].get<double>(), frame.position[2 * i + 1]);
-    EXPECT_DOUBLE_EQ(nodes["nodes"][i]["forces"]["force/contact"][0].get<double>(), frame.contact[2 * i]);
+    EXPECT_DOUBLE_EQ(at_frame["nodes"][i]["position"][0].get<double>(), frame.position[2 * i]);
+    EXPECT_DOUBLE_EQ(at_frame["nodes"][i]["position"][1].get<double>(), frame.position[2 * i + 1]);
+    EXPECT_DOUBLE_EQ(at_frame["nodes"][i]["forces"]["force/contact"][0].get<double>(), frame.contact[2 * i]);
   }
+  // A third of the way from frame 42 to 43: the values the map's picture of that time is drawn
+  // from, a third of the way from one frame's to the next (the nearest frame's put the hover
+  // marker off the drawn rod); the nearest frame still named.
+  const double t = frame.time + (next.time - frame.time) / 3;
+  const json nodes = get_json(s, "/api/nodes?t=" + exact(t));
+  EXPECT_EQ(nodes["frame"], 42);
+  EXPECT_EQ(nodes["between"], json::array({42, 43}));
+  EXPECT_DOUBLE_EQ(nodes["time"].get<double>(), t);
+  ASSERT_EQ(nodes["nodes"].size(), 40u);
+  double moved = 0;
+  for (int i = 0; i < 40; ++i)
+    for (int k = 0; k < 2; ++k) {
+      const double a = frame.position[2 * i + k], b = next.position[2 * i + k];
+      EXPECT_NEAR(nodes["nodes"][i]["position"][k].get<double>(), a + (b - a) / 3, 1e-12) << "node " << i;
+      moved = std::max(moved, std::abs(b - a));
+    }
+  EXPECT_GT(moved, 1e-6) << "the rod does not move between frames 42 and 43: the blend is not checked";
   // Series: min/max over every frame equal the brute-force extremes over the log.
   const json series = get_json(s, "/api/series?channel=force/contact&reduce=max&points=7");
   double lo = 1e300, hi = -1e300;

@@ -142,11 +142,13 @@ json ReplayRun::info() const {
 
 json ReplayRun::nodes(double t) const {
   const render::FrameSource& s = *source_;
-  std::size_t i = s.frame_at_time(t);
+  const std::size_t before = s.frame_at_time(t);
+  std::size_t i = before;
   if (i + 1 < s.frame_count() && std::abs(s.time_of(i + 1) - t) < std::abs(s.time_of(i) - t)) ++i;
-  // Read the whole record once; every channel is a slice of it.
+  // The record the map's picture of t is drawn from, read once (every channel is a slice of it):
+  // the nearest frame's values put the hover marker off the drawn rod of a fast-moving run.
   std::vector<double> r;
-  s.record(i, r);
+  s.record_at_time(t, r);
   const FrameLogHeader& h = s.header();
   const int position = h.find_channel(channel::kPosition), velocity = h.find_channel(channel::kVelocity);
   json nodes = json::array();
@@ -168,7 +170,9 @@ json ReplayRun::nodes(double t) const {
     node["forces"] = forces;
     nodes.push_back(node);
   }
-  return {{"run", id_}, {"time", r[0]}, {"frame", i}, {"nodes", nodes}};
+  json out = {{"run", id_}, {"time", r[0]}, {"frame", i}, {"nodes", nodes}};
+  if (r[0] != s.time_of(before)) out["between"] = {before, before + 1};
+  return out;
 }
 
 std::pair<double, double> ReplayRun::value_at(int channel, SeriesReduce reduce, double t) const {

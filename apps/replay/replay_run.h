@@ -45,7 +45,8 @@ class ReplayRun {
 
   // GET /api/run
   nlohmann::json info() const;
-  // GET /api/nodes: the logged frame nearest to t.
+  // GET /api/nodes: every node at time t as the picture of t shows it (between two logged frames,
+  // blended as the renderer blends them), with the nearest logged frame's index.
   nlohmann::json nodes(double t) const;
   // GET /api/value: one channel reduced at time t as the map shows that time (clamped to the
   // run's range, blended between frames; see FrameSource::record_at_time). {time (s), value}.

@@ -1015,7 +1015,8 @@
     const tip = n.index === count - 1 ? ' <span class="dim">(tip)</span>' : n.index === 0 ? ' <span class="dim">(base)</span>' : '';
     const mm = (v) => (v * 1e3).toFixed(3);
     let html = `<div class="node-head"><span><b>node <span id="hover-node">${n.index}</span></b>${tip}</span>` +
-      `<span class="dim">${S.compare ? 'run ' + slot.run.toUpperCase() + ' · ' : ''}t ${data.time.toFixed(3)} s · frame ${data.frame}</span></div>` +
+      `<span class="dim">${S.compare ? 'run ' + slot.run.toUpperCase() + ' · ' : ''}t ${data.time.toFixed(3)} s · ` +
+      `${data.between ? `between frames ${data.between[0]} and ${data.between[1]}` : `frame ${data.frame}`}</span></div>` +
       '<table><thead><tr><th></th><th>x</th><th>y</th><th>|·|</th></tr></thead><tbody>' +
       `<tr><th>position [mm]</th><td id="hover-x" data-m="${n.position[0]}">${mm(n.position[0])}</td><td id="hover-y" data-m="${n.position[1]}">${mm(n.position[1])}</td><td></td></tr>`;
     if (n.velocity) {
