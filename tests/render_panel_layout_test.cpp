@@ -41,13 +41,23 @@ TEST(RenderPanelLayout, NothingOverlapsOrLeavesTheFrameAtAnySize) {
   SyntheticLogSpec fed_spec;
   fed_spec.feed = true;
   const std::string fed = testing::make_run(dir, fed_spec, "fed");
+  // A rod held every way has five legend entries more (its supports).
+  const std::string held = dir / "held";
+  std::filesystem::create_directories(held);
+  LogMetadata held_metadata = synthetic_metadata(SyntheticLogSpec{});
+  held_metadata.boundary.clamp = ClampKind::kFirstEdge;
+  held_metadata.boundary.pinned = {10};
+  held_metadata.boundary.supports = {{20, SupportAxis::kY}, {39, SupportAxis::kX}};
+  held_metadata.boundary.prescribed = {{30, Vec2(0.01, 0), Vec2::Zero(), 0.0}};
+  write_synthetic_log(held + "/frames.vlog", SyntheticLogSpec{}, held_metadata);
+  ASSERT_EQ(count(panel_at(held, 1280, 720), "legend"), count(panel_at(run, 1280, 720), "legend") + 5);
   const auto hud_rows = [&](const std::string& path) { return path == failed ? 5u : path == fed ? 6u : 4u; };
   const auto name = [&](const std::string& path) {
-    return path == failed ? " (failed run)" : path == fed ? " (fed run)" : "";
+    return path == failed ? " (failed run)" : path == fed ? " (fed run)" : path == held ? " (held rod)" : "";
   };
   const std::vector<std::pair<int, int>> sizes = {{1280, 720}, {640, 360}, {480, 270}, {320, 180}, {320, 240},
                                                   {640, 120}, {1200, 100}, {160, 120}, {240, 320}, {120, 90}};
-  for (const std::string& path : {run, failed, fed})
+  for (const std::string& path : {run, failed, fed, held})
   for (const auto& [w, h] : sizes) {
     const auto items = panel_at(path, w, h);
     const std::string size = std::to_string(w) + " x " + std::to_string(h) + name(path);
