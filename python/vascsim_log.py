@@ -44,8 +44,10 @@ class FrameLog:
                 raise ValueError("%s: not a vascsim frame log (no VSIMLOG magic)" % path)
             version, self.node_count, count = struct.unpack("<III", head[8:20])
             if version != VERSION:
-                raise ValueError("%s: frame log format version %d; this reader reads version %d"
-                                 % (path, version, VERSION))
+                newer = version > VERSION
+                raise ValueError("%s: frame log format version %d%s; this reader reads version %d%s"
+                                 % (path, version, ", written by a newer vascsim" if newer else "", VERSION,
+                                    " (update vascsim_log.py to read it)" if newer else ""))
             if count > 4096:
                 raise ValueError("%s: %d channels claimed (at most 4096)" % (path, count))
             self.channels, offset = [], 1  # the time is value 0 of a record

@@ -206,9 +206,11 @@ void FrameLogReader::read_header() {
   in.bytes(magic, 8);
   if (std::memcmp(magic, kMagic, 8) != 0) throw InputError(path + ": not a vascsim frame log");
   const std::uint32_t version = in.u32();
+  // A newer format (3D rods, say) comes with a newer version number: say so, not "corrupt".
   if (version != kFrameLogVersion)
-    throw InputError(path + ": frame log version " + std::to_string(version) + ", this build reads version " +
-                     std::to_string(kFrameLogVersion));
+    throw InputError(path + ": frame log format version " + std::to_string(version) +
+                     (version > kFrameLogVersion ? ", written by a newer vascsim" : "") + "; this build reads version " +
+                     std::to_string(kFrameLogVersion) + (version > kFrameLogVersion ? " (update vascsim to read it)" : ""));
   header_.node_count = in.u32();
   const std::uint32_t channel_count = in.u32();
   if (channel_count > 4096) throw InputError(path + ": corrupt frame log header (channel count)");

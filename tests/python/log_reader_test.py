@@ -86,7 +86,7 @@ try:
     vascsim_log.open_log(other)
     raise AssertionError("a version 2 log was read")
 except ValueError as e:
-    assert "format version 2; this reader reads version 1" in str(e), e
+    assert "format version 2, written by a newer vascsim; this reader reads version 1" in str(e), e
 # A channel whose value count does not match its layout (the first channel, position: 2 per
 # node) is refused by name, by this reader and by the C++ one behind `vascsim export`.
 name_length = int.from_bytes(data[20:24], "little")
