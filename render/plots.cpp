@@ -295,7 +295,11 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     const auto force_entry = [&](double nominal_px) {
       return "magnetic force (" + format_value(typical, fu, 2) + " = " + std::to_string(int(std::lround(nominal_px))) + " px)";
     };
-    LegendEntries entries = {{kPath, "reference path"}, {kTip, "tip trajectory"}};
+    // Only what the plot draws: a free rod's run has no path, one only pushed from its root no
+    // magnetic force (the legend listed both, the title named the force).
+    const bool path = m.path.size() >= 2;
+    LegendEntries entries = {{kTip, "tip trajectory"}};
+    if (path) entries.insert(entries.begin(), {kPath, "reference path"});
     if (arrows) entries.push_back({kActuation, force_entry(999)});  // as wide as the label gets
     Axes a = map_axes(c, source, s, to_mm, legend_width(c, entries, font));
     draw_grid(c, a);
@@ -319,7 +323,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
       }
       entries.back().second = force_entry(nominal);
     }
-    draw_frame(c, a, "x (mm)", "y (mm)", "Tip trajectory and magnetic force", white);
+    draw_frame(c, a, "x (mm)", "y (mm)", arrows ? "Tip trajectory and magnetic force" : "Tip trajectory", white);
     legend(c, a, entries, font, true);
     finish("tip_trajectory.png");
   }
