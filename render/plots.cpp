@@ -419,7 +419,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
       c.box(box.min, box.max, hex(0xFFFFFF, 0.8f), 3);
       c.text(label, box.min + glm::vec2(3, 1.05f * h), label_font, kInk);
     }
-    draw_frame(c, a, "x (mm)", "y (mm)", "Rod snapshots and contact forces", white);
+    draw_frame(c, a, "x (mm)", "y (mm)", typical > 0 ? "Rod snapshots and contact forces" : "Rod snapshots", white);
     legend(c, a, entries, font, true);
     finish("snapshots.png");
   }

@@ -1,7 +1,8 @@
-// The tip trajectory plot explains only what it draws: a free rod's run (no path) listed a
-// "reference path" in its legend, and a run without magnetic force (only pushed from its root, or
-// a free rod) was titled "Tip trajectory and magnetic force". Checked by colour: the path's blue
-// anywhere in the plot (the dashed path and its legend line), and the width of the title's ink.
+// The tip trajectory and snapshot plots explain only what they draw: a free rod's run (no path)
+// listed a "reference path" in its legend, a run without magnetic force (only pushed from its
+// root, or a free rod) was titled "Tip trajectory and magnetic force", and one without contact
+// "Rod snapshots and contact forces". Checked by colour: the path's blue anywhere in the plot,
+// and the width of the title's ink.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,16 +21,16 @@ namespace {
 
 using testing::ScratchDir;
 
-struct TrajectoryPlot {
-  int path_pixels = 0;  // of the path's colour (#4C6EF5)
+// What the checks read of a plot: pixels of the path's colour (#4C6EF5: the dashed path and its
+// legend line) and the width of the title's ink.
+struct PlotInk {
+  int path_pixels = 0;
   int title_width = 0;  // px, from the title's first dark pixel to its last
 };
 
-TrajectoryPlot plot_of(const ScratchDir& dir, const std::string& run) {
-  const std::string plots = dir / (std::filesystem::path(run).filename().string() + "_plots");
-  write_plots(FrameSource(run), plots, false);
-  const io::PngPixels image = io::read_png(plots + "/tip_trajectory.png", 3);
-  TrajectoryPlot p;
+PlotInk ink_of(const std::string& png) {
+  const io::PngPixels image = io::read_png(png, 3);
+  PlotInk p;
   int first = image.width, last = -1;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
@@ -42,29 +43,45 @@ TrajectoryPlot plot_of(const ScratchDir& dir, const std::string& run) {
   return p;
 }
 
+// The tip trajectory and snapshot plots of a run.
+struct RunPlots {
+  PlotInk trajectory, snapshots;
+};
+
+RunPlots plots_of(const ScratchDir& dir, const std::string& run) {
+  const std::string plots = dir / (std::filesystem::path(run).filename().string() + "_plots");
+  write_plots(FrameSource(run), plots, false);
+  return {ink_of(plots + "/tip_trajectory.png"), ink_of(plots + "/snapshots.png")};
+}
+
 TEST(RenderPlotsTrajectory, ExplainsOnlyWhatItDraws) {
   ScratchDir dir("plots_trajectory");
-  const TrajectoryPlot steered = plot_of(dir, testing::make_run(dir, SyntheticLogSpec{}, "steered"));
-  EXPECT_GT(steered.path_pixels, 100) << "no path drawn or explained";
-  ASSERT_GT(steered.title_width, 0);
+  const RunPlots steered = plots_of(dir, testing::make_run(dir, SyntheticLogSpec{}, "steered"));
+  EXPECT_GT(steered.trajectory.path_pixels, 100) << "no path drawn or explained";
+  ASSERT_GT(steered.trajectory.title_width, 0);
+  ASSERT_GT(steered.snapshots.title_width, 0);
 
-  SyntheticLogSpec pushed;  // a path to follow, but no magnetic force
+  SyntheticLogSpec pushed;  // a path to follow, but no magnetic or contact force
   pushed.forces = false;
   pushed.reference = false;
   pushed.feed = true;
-  const TrajectoryPlot pushed_plot = plot_of(dir, testing::make_run(dir, pushed, "pushed"));
-  EXPECT_GT(pushed_plot.path_pixels, 100);
-  // "Tip trajectory" is less than half as wide as "Tip trajectory and magnetic force".
-  EXPECT_LT(pushed_plot.title_width, steered.title_width / 2) << "the title names a magnetic force not drawn";
+  const RunPlots pushed_plots = plots_of(dir, testing::make_run(dir, pushed, "pushed"));
+  EXPECT_GT(pushed_plots.trajectory.path_pixels, 100);
+  // "Tip trajectory" is less than half as wide as "Tip trajectory and magnetic force", and "Rod
+  // snapshots" than "Rod snapshots and contact forces".
+  EXPECT_LT(pushed_plots.trajectory.title_width, steered.trajectory.title_width / 2)
+      << "the title names a magnetic force not drawn";
+  EXPECT_LT(pushed_plots.snapshots.title_width, steered.snapshots.title_width / 2)
+      << "the title names contact forces not drawn";
 
   LogMetadata no_path = synthetic_metadata(pushed);
   no_path.path.clear();
   const std::string free_rod = dir / "free_rod";
   std::filesystem::create_directories(free_rod);
   write_synthetic_log(free_rod + "/frames.vlog", pushed, no_path);
-  const TrajectoryPlot free_plot = plot_of(dir, free_rod);
-  EXPECT_EQ(free_plot.path_pixels, 0) << "a reference path in the legend of a run without one";
-  EXPECT_EQ(free_plot.title_width, pushed_plot.title_width);
+  const RunPlots free_plots = plots_of(dir, free_rod);
+  EXPECT_EQ(free_plots.trajectory.path_pixels, 0) << "a reference path in the legend of a run without one";
+  EXPECT_EQ(free_plots.trajectory.title_width, pushed_plots.trajectory.title_width);
 }
 
 }  // namespace
