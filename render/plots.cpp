@@ -184,11 +184,6 @@ void save(Canvas& c, const std::string& path, bool force, std::vector<std::strin
   written.push_back(path);
 }
 
-void no_data(Canvas& c, const Axes& a, const char* what, int font) {
-  c.text(std::string("no ") + what + " in this log", {0.5f * (a.left + a.right), 0.5f * (a.top + a.bottom)}, font,
-         kInk, TextAlign::kCenter);
-}
-
 }  // namespace
 
 glm::vec2 Axes::map(double x, double y) const {
@@ -256,13 +251,30 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir)) throw InputError(dir + ": cannot create the plots directory");
-  std::vector<const char*> names(std::begin(kRunPlotFiles), std::end(kRunPlotFiles));
-  if (source.has_feed()) names.push_back(kFeedPlotFile);
-  // Refuse before drawing anything, so a refusal leaves the directory as it was.
-  for (const char* name : names) check_replaceable_output((fs::path(dir) / name).string(), force, source.run_files());
   frames.last = std::min(frames.last, source.frame_count() - 1);
   if (frames.first > frames.last) throw InputError(dir + ": no logged frame to plot");
   const Series s = collect(source, frames);
+  // A plot of what the log has: a free rod's run has no magnetic force, tracking error or wall
+  // contact to plot (each was an empty plot saying so), a run only pushed from its root no
+  // magnetic force; only a fed run has the feed's push.
+  std::vector<const char*> names = {"tip_trajectory.png"};
+  if (s.has_actuation) names.push_back("actuation_force.png");
+  names.push_back("snapshots.png");
+  if (s.has_error) names.push_back("tracking_error.png");
+  if (s.has_contact) names.push_back("contact_force.png");
+  if (s.has_feed) names.push_back(kFeedPlotFile);
+  // Refuse before drawing anything, so a refusal leaves the directory as it was.
+  for (const char* name : names) check_replaceable_output((fs::path(dir) / name).string(), force, source.run_files());
+  // Replacing the plots (force), those of another run that this one has none of go: left beside
+  // this run's, they would pass for its own.
+  const auto written_here = [&](const char* name) {
+    return std::any_of(names.begin(), names.end(), [&](const char* n) { return std::string(n) == name; });
+  };
+  std::vector<const char*> every(std::begin(kRunPlotFiles), std::end(kRunPlotFiles));
+  every.push_back(kFeedPlotFile);
+  for (const char* name : every)
+    if (force && !written_here(name) && fs::is_regular_file(fs::symlink_status(fs::path(dir) / name, ec)))
+      fs::remove(fs::path(dir) / name, ec);
   const LogMetadata& m = source.metadata();
   std::vector<std::string> written;
   Canvas c(width, height);
@@ -327,7 +339,7 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     legend(c, a, entries, font, true);
     finish("tip_trajectory.png");
   }
-  {  // Actuation force over time (Fig. 12).
+  if (s.has_actuation) {  // Actuation force over time (Fig. 12).
     c.clear(white);
     Axes a = time_axes(c, s);
     std::vector<double> mag, fx, fy;
@@ -337,16 +349,11 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     all.insert(all.end(), fy.begin(), fy.end());
     fit_range(all, a.ymin, a.ymax, true);
     draw_grid(c, a);
-    if (s.has_actuation) {
-      plot_line(c, a, s.t, fx, 2, kSecondary);
-      plot_line(c, a, s.t, fy, 2, kTertiary, true);
-      plot_line(c, a, s.t, mag, 3, kActuation);
-    }
+    plot_line(c, a, s.t, fx, 2, kSecondary);
+    plot_line(c, a, s.t, fy, 2, kTertiary, true);
+    plot_line(c, a, s.t, mag, 3, kActuation);
     draw_frame(c, a, "time (s)", "magnetic " + force_label, "Actuation (magnetic) force on the robot", white);
-    if (s.has_actuation)
-      legend(c, a, {{kActuation, "|F|"}, {kSecondary, "Fx"}, {kTertiary, "Fy"}}, font);
-    else
-      no_data(c, a, "actuation force", font);
+    legend(c, a, {{kActuation, "|F|"}, {kSecondary, "Fx"}, {kTertiary, "Fy"}}, font);
     finish("actuation_force.png");
   }
   {  // Whole-body snapshots with contact arrows (Fig. 14).
@@ -423,22 +430,21 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     legend(c, a, entries, font, true);
     finish("snapshots.png");
   }
-  {  // Tracking error over time.
+  if (s.has_error) {  // Tracking error over time.
     c.clear(white);
     Axes a = time_axes(c, s);
     std::vector<double> e;
     for (double v : s.error) e.push_back(v * to_mm);
     fit_range(e, a.ymin, a.ymax, true);
     draw_grid(c, a);
-    if (s.has_error) plot_line(c, a, s.t, e, 2.5f, kPath);
+    plot_line(c, a, s.t, e, 2.5f, kPath);
     // Without a target (nothing steers the tip) the error is measured from the path, and says so.
     draw_frame(c, a, "time (s)", s.error_from_path ? "distance from path (mm)" : "tip error (mm)",
                s.error_from_path ? "Distance from tip to reference path" : "Tracking error: distance from tip to reference",
                white);
-    if (!s.has_error) no_data(c, a, "tracking error", font);
     finish("tracking_error.png");
   }
-  {  // Contact force over time.
+  if (s.has_contact) {  // Contact force over time.
     c.clear(white);
     Axes a = time_axes(c, s);
     std::vector<double> mx, tot;
@@ -447,15 +453,10 @@ std::vector<std::string> write_plots(const FrameSource& source, const std::strin
     all.insert(all.end(), tot.begin(), tot.end());
     fit_range(all, a.ymin, a.ymax, true);
     draw_grid(c, a);
-    if (s.has_contact) {
-      plot_line(c, a, s.t, tot, 2, kSecondary);
-      plot_line(c, a, s.t, mx, 2.5f, kContact);
-    }
+    plot_line(c, a, s.t, tot, 2, kSecondary);
+    plot_line(c, a, s.t, mx, 2.5f, kContact);
     draw_frame(c, a, "time (s)", "contact " + force_label, "Wall contact force", white);
-    if (s.has_contact)
-      legend(c, a, {{kContact, "largest on one node"}, {kSecondary, "sum over nodes"}}, font);
-    else
-      no_data(c, a, "contact force", font);
+    legend(c, a, {{kContact, "largest on one node"}, {kSecondary, "sum over nodes"}}, font);
     finish("contact_force.png");
   }
   if (s.has_feed) {  // The drive's push on the rod over time (negative: pulling it back).

@@ -38,8 +38,10 @@ struct FrameRange {
   std::size_t first = 0, last = static_cast<std::size_t>(-1);
 };
 
-// Writes the plots of the logged frames in `frames` into `dir` and returns their paths. Refuses
-// to overwrite an existing plot unless `force`. Throws InputError on failure.
+// Writes the plots of the logged frames in `frames` into `dir` and returns their paths: the tip
+// trajectory and the snapshots always, the magnetic force, tracking error, wall contact and
+// feed where the log has them. Refuses to overwrite an existing plot unless `force`, which also
+// removes the plots of those names this log has none of. Throws InputError on failure.
 std::vector<std::string> write_plots(const FrameSource& source, const std::string& dir, bool force,
                                      FrameRange frames = {}, int width = 1200, int height = 800);
 

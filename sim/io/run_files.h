@@ -5,6 +5,8 @@
 
 namespace vascsim {
 
+// Each but the trajectory and snapshots is drawn only where the log has its data (a free rod's
+// run has no magnetic force, tracking error or wall contact).
 inline constexpr const char* kRunPlotFiles[] = {"tip_trajectory.png", "actuation_force.png", "snapshots.png",
                                                 "tracking_error.png", "contact_force.png"};
 // Drawn besides those for a run whose rod is fed through the inlet (control.advance).
