@@ -60,6 +60,30 @@ TEST(CliRun, WritesLogAndSummaryAndRefusesToReuseADirectory) {
   fs::remove_all(dir);
 }
 
+// Steps kept over the tolerance at a floor are the presets' design (the default maze run keeps
+// most of its steps there): the run says why and how to follow the tolerance instead, and only
+// when it kept any. A clamped rod sagging under its own weight keeps every step at the floor; the
+// same rod under a slowly ramped, damped tip load none.
+TEST(CliRun, StepsKeptAtAFloorAreExplainedWhenThereAreAny) {
+  const std::string dir = fresh_temp_dir("run_floor");
+  const char* rod = R"("maze": null, "rod": {"nodes": 21}, "shape": {"start": [0, 0], "direction": 0},
+                      "boundary": {"clamp": "first_edge"}, )";
+  write_text(dir + "/sag.json", std::string("{") + rod + R"("loads": {"gravity": {"enabled": true}},
+             "run": {"duration": 0.05, "output_interval": 0.01}})");
+  write_text(dir + "/calm.json", std::string("{") + rod + R"("loads": {"damping": {"enabled": true, "coefficient": 0.05},
+             "point": [{"node": -1, "force": [0, -1e-4], "profile": "ramp", "ramp_time": 0.5}]},
+             "run": {"duration": 0.5, "output_interval": 0.1}})");
+  const std::string hint = "(a floor, solver.dt_floor or dt_mean_min, caps the cost of motion the tolerance cannot follow";
+  for (const char* name : {"sag", "calm"}) {
+    const CommandResult r = run_vascsim("run " + dir + "/" + name + ".json --out " + dir + "/" + name);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const int kept = nlohmann::json::parse(read_text(dir + "/" + name + "/summary.json"))["warnings"]["step_over_tolerance"]["count"];
+    EXPECT_EQ(kept > 0, std::string(name) == "sag") << name << " kept " << kept << " steps at a floor";
+    EXPECT_EQ(r.output.find(hint) != std::string::npos, kept > 0) << name << ":\n" << r.output;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(CliRun, BadSceneExitsTwoAndWritesNothing) {
   const std::string dir = fresh_temp_dir("run_bad");
   write_text(dir + "/scene.json", R"({"control": {"mode": "magic"}})");

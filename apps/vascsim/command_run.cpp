@@ -263,9 +263,15 @@ int run_run_command(int argc, char** argv) {
                 short_number(s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0, "%.1f").c_str(), s.frames,
                 log_path.c_str());
   // Where a controlled run's steps went: what a user tuning rtol or the floors looks at first.
-  if (scene.solver.mode != SolveMode::kStatic && run.model().solver.adaptive == StepControl::kError)
+  if (scene.solver.mode != SolveMode::kStatic && run.model().solver.adaptive == StepControl::kError) {
     std::printf("error control: mean step %.3g s, %d steps rejected over the tolerance, %d kept over it at a floor\n",
                 s.steps ? s.simulated_time / s.steps : 0.0, s.error_rejected_steps, s.warnings.step_over_tolerance.count);
+    // The main job's run keeps most of its steps there, by design: say so, and how to follow the
+    // tolerance instead, rather than leave a new user to wonder whether the run went wrong.
+    if (s.warnings.step_over_tolerance.count > 0)
+      std::printf("  (a floor, solver.dt_floor or dt_mean_min, caps the cost of motion the tolerance cannot follow, "
+                  "such as a body rattling on walls; lower them to follow it: docs/accuracy.md, \"Presets\")\n");
+  }
   if (run.navigation()) {
     char goal[64] = "goal not reached";
     if (s.goal_reached) std::snprintf(goal, sizeof goal, "goal reached at t = %.3f s", s.goal_time);
