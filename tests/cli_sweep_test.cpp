@@ -475,6 +475,12 @@ TEST(SweepCli, BadInputIsRefusedBeforeAnythingIsWritten) {
   EXPECT_TRUE(has(v.output, "/maze/rows: expected an integer in [1, 200], got 0")) << v.output;
   EXPECT_FALSE(fs::exists(dir + "/out"));
 
+  // A sweep file that cannot be opened says why, and nothing is made.
+  const CommandResult absent = sweep_command(dir + "/absent.json --out " + dir + "/out");
+  EXPECT_EQ(absent.exit_code, 2) << absent.output;
+  EXPECT_TRUE(has(absent.output, dir + "/absent.json: cannot open sweep file (No such file or directory)")) << absent.output;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+
   // Somebody's folder is never used; another sweep's needs --force.
   fs::create_directories(dir + "/mine");
   write_text(dir + "/mine/notes.txt", "mine");
