@@ -1,9 +1,7 @@
 // vascsim sweep: parameter sweeps (docs/sweeps.md). Parses the options and hands over to
 // apps/sweep: the sweep directory, the local runner, the files for external engines, the merge.
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -90,17 +88,6 @@ void parse_shard(const std::string& text, std::size_t& i, std::size_t& n) {
   } catch (const std::exception&) {
     throw UsageError("--shard: expected I/N with 0 <= I < N, such as 0/4, got '" + text + "'");
   }
-}
-
-std::string read_text(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) throw InputError(path + ": cannot open sweep file (" + std::strerror(errno) + ")");
-  std::string text;
-  char buffer[65536];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
-  std::fclose(f);
-  return text;
 }
 
 int merge_command(int argc, char** argv) {
@@ -211,7 +198,10 @@ int run_sweep_command(int argc, char** argv) {
   } else {
     if (args.value("run-index")) throw UsageError("--run-index needs the sweep directory DIR, not the sweep file");
     std::optional<NoticeOnSignal> notice(std::in_place, "vascsim sweep: interrupted while checking the sweep's scenes; nothing was written");
-    const SweepSpec spec = read_sweep_file(input);
+    // Read once: the sweep directory keeps the very text that was checked (a second read could
+    // copy a file edited in between, unbounded).
+    const std::string sweep_text = read_sweep_file_text(input);
+    const SweepSpec spec = read_sweep_text(sweep_text, input);
     const SweepPlan plan = expand_sweep(spec);
     notice.reset();
     for (const SweepUnusedField& u : plan.unused)
@@ -229,7 +219,7 @@ int run_sweep_command(int argc, char** argv) {
     bool resumed = false;
     notice.emplace("vascsim sweep: interrupted while writing the sweep directory " + *out +
                    "; the same command takes it up again");
-    dir = sweep::prepare_sweep_directory(plan, read_text(input), *out, args.flag("force"), resumed);
+    dir = sweep::prepare_sweep_directory(plan, sweep_text, *out, args.flag("force"), resumed);
     notice.reset();
     if (!quiet)
       std::printf("sweep %s: %zu run%s in %s%s\n", spec.name.c_str(), plan.runs.size(), plan.runs.size() == 1 ? "" : "s",

@@ -232,7 +232,7 @@ SweepSpec read_sweep_text(const std::string& text, const std::string& label) {
   return spec;
 }
 
-SweepSpec read_sweep_file(const std::string& path) {
+std::string read_sweep_file_text(const std::string& path) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
@@ -243,8 +243,10 @@ SweepSpec read_sweep_file(const std::string& path) {
   if (file.bad()) throw InputError(path + ": cannot read sweep file");
   if (text.size() > kMaxSweepFileBytes)
     throw InputError(path + ": larger than " + std::to_string(kMaxSweepFileBytes >> 20) + " MiB, the limit for a sweep file");
-  return read_sweep_text(text, path);
+  return text;
 }
+
+SweepSpec read_sweep_file(const std::string& path) { return read_sweep_text(read_sweep_file_text(path), path); }
 
 std::size_t sweep_run_count(const SweepSpec& spec) {
   std::size_t n = static_cast<std::size_t>(spec.repeats);

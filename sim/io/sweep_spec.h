@@ -44,6 +44,9 @@ struct SweepSpec {
 // Reads and checks a sweep file. Throws InputError naming the file, the JSON pointer and what
 // was expected. Does not read the scene (expand_sweep does).
 SweepSpec read_sweep_file(const std::string& path);
+// The text of a sweep file, read once (at most the sweep file's size limit), for a caller that
+// both parses it (read_sweep_text) and keeps it (the sweep directory's copy). Throws InputError.
+std::string read_sweep_file_text(const std::string& path);
 // As read_sweep_file, from text; `label` names it in messages and resolves the scene path.
 SweepSpec read_sweep_text(const std::string& text, const std::string& label);
 // Runs the spec describes: the product of the axes' lengths (or their common length when
